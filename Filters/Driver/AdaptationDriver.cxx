@@ -1,0 +1,254 @@
+#include "AdaptationDriver.h"
+
+#include "ColorLoop.h"
+#include "Geometry.h"
+#include "MeshPartitioner.h"
+#include "ParallelFor.h"
+#include "PartitionColoring.h"
+
+#include <chrono>
+#include <cmath>
+#include <new>
+#include <string>
+
+namespace cgmesh
+{
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+Status validateInput(const TetMesh& input, const AdaptationOptions& options)
+{
+  if (input.coordinates.size() % 3 != 0)
+  {
+    return Status::failure("point coordinates are not a multiple of three values");
+  }
+  if (input.hasRegions() && input.regions.size() != input.tets.size())
+  {
+    return Status::failure("the region array does not have one value per tet");
+  }
+  const PointId pointCount = input.numberOfPoints();
+  for (const Tet& tet : input.tets)
+  {
+    for (PointId p : tet)
+    {
+      if (p < 0 || p >= pointCount)
+      {
+        return Status::failure("a tet references point " + std::to_string(p) +
+          " but the mesh has " + std::to_string(pointCount) + " points");
+      }
+    }
+  }
+  if (options.numberOfIterations < 0)
+  {
+    return Status::failure("the number of iterations must not be negative");
+  }
+  if (options.numberOfPartitions < 1)
+  {
+    return Status::failure("the number of partitions must be at least 1");
+  }
+  if (!(options.maximumEdgeLength > 0) && !(options.edgeLengthFactor > 0))
+  {
+    return Status::failure("set a positive maximum edge length or edge length factor");
+  }
+  return Status::success();
+}
+
+// Mean over the six edges of every tet (shared edges count once per tet, which weighs edges by
+// how many tets use them and needs no edge list).
+double meanTetEdgeLength(const TetMesh& mesh)
+{
+  double sum = 0;
+  for (const Tet& tet : mesh.tets)
+  {
+    for (const auto& edge : TetEdgeCorners)
+    {
+      sum += std::sqrt(squaredEdgeLength(mesh, tet[edge[0]], tet[edge[1]]));
+    }
+  }
+  return mesh.tets.empty() ? 0 : sum / (6.0 * static_cast<double>(mesh.tets.size()));
+}
+
+void distributeTets(const TetMesh& input,
+  const std::vector<int>& partitionOfCell,
+  AdaptationState& state)
+{
+  for (CellId t = 0; t < input.numberOfTets(); ++t)
+  {
+    PartitionMesh& partition = state.partitions[partitionOfCell[t]];
+    partition.tets.push_back(input.tets[t]);
+    partition.parentCells.push_back(t);
+    if (input.hasRegions())
+    {
+      partition.regions.push_back(input.regions[t]);
+    }
+  }
+  state.coordinates = input.coordinates;
+  state.inputPointCount = input.numberOfPoints();
+}
+
+Status partitionAndColor(const TetMesh& input,
+  const AdaptationOptions& options,
+  std::vector<int>& partitionOfCell,
+  PartitionGraph& graph,
+  std::vector<int>& colorOfPartition,
+  AdaptationResult& result)
+{
+  auto start = Clock::now();
+  Status status = partitionMesh(input, result.numberOfPartitions, partitionOfCell);
+  result.seconds.partition = secondsSince(start);
+  if (!status.ok())
+  {
+    return status;
+  }
+
+  start = Clock::now();
+  graph = buildPartitionGraph(
+    input.tets, partitionOfCell, result.numberOfPartitions, input.numberOfPoints());
+  result.seconds.graph = secondsSince(start);
+
+  start = Clock::now();
+  const auto coloring = makeColoring(options.coloring);
+  if (!coloring)
+  {
+    return Status::failure("unknown colouring '" + options.coloring + "'");
+  }
+  const int threads = result.numberOfThreads;
+  const ParallelFor parallelFor =
+    [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
+  { runParallel(threads, count, body); };
+  status = coloring->color(graph, parallelFor, colorOfPartition);
+  result.seconds.color = secondsSince(start);
+  if (status.ok() && !isProperColoring(graph, colorOfPartition))
+  {
+    return Status::failure(std::string("colouring '") + coloring->name() +
+      "' gave two adjacent partitions the same colour");
+  }
+  result.numberOfColors = countColors(colorOfPartition);
+  return status;
+}
+
+Status runPipeline(const TetMesh& input, const AdaptationOptions& options, AdaptationResult& result)
+{
+  std::vector<int> partitionOfCell;
+  PartitionGraph graph;
+  std::vector<int> colorOfPartition;
+  Status status =
+    partitionAndColor(input, options, partitionOfCell, graph, colorOfPartition, result);
+  if (!status.ok())
+  {
+    return status;
+  }
+  if (options.progress)
+  {
+    options.progress(0.1, "partitioned");
+  }
+
+  AdaptationState state;
+  state.partitions.resize(result.numberOfPartitions);
+  distributeTets(input, partitionOfCell, state);
+  const TemplateTable templates;
+  ColorLoopSetup setup;
+  setup.graph = &graph;
+  setup.colorOfPartition = &colorOfPartition;
+  setup.numberOfColors = result.numberOfColors;
+  setup.numberOfIterations = options.numberOfIterations;
+  setup.threads = result.numberOfThreads;
+  setup.squaredThreshold = result.edgeLengthThreshold * result.edgeLengthThreshold;
+  setup.templates = &templates;
+  status = runColorLoop(setup, options, state, result);
+  if (!status.ok() || result.aborted)
+  {
+    return status;
+  }
+
+  const auto start = Clock::now();
+  MergedMesh merged;
+  status = mergePartitions(
+    state.partitions, state.coordinates, state.inputPointCount, state.newPointParents, merged);
+  state = AdaptationState();
+  result.seconds.merge = secondsSince(start);
+  if (!status.ok())
+  {
+    return status;
+  }
+  result.mesh = std::move(merged.mesh);
+  result.parentCell = std::move(merged.parentCell);
+  result.partitionOfCell = std::move(merged.partitionOfCell);
+  result.provenance = std::move(merged.provenance);
+  result.colorOfCell.resize(result.partitionOfCell.size());
+  for (std::size_t t = 0; t < result.partitionOfCell.size(); ++t)
+  {
+    result.colorOfCell[t] = colorOfPartition[result.partitionOfCell[t]];
+  }
+  if (merged.removedPoints > 0)
+  {
+    result.warnings.push_back(
+      "removed " + std::to_string(merged.removedPoints) + " points that no tetrahedron uses");
+  }
+  return Status::success();
+}
+
+} // namespace
+
+Status adaptMesh(const TetMesh& input, const AdaptationOptions& options, AdaptationResult& result)
+{
+  const auto start = Clock::now();
+  result = AdaptationResult();
+  Status status = validateInput(input, options);
+  if (!status.ok())
+  {
+    return status;
+  }
+  result.numberOfThreads = resolveThreadCount(options.numberOfThreads);
+  result.edgeLengthThreshold = options.maximumEdgeLength > 0
+    ? options.maximumEdgeLength
+    : options.edgeLengthFactor * meanTetEdgeLength(input);
+  result.numberOfPartitions = options.numberOfPartitions;
+  if (input.numberOfTets() > 0 && options.numberOfPartitions > input.numberOfTets())
+  {
+    result.numberOfPartitions = static_cast<int>(input.numberOfTets());
+    result.warnings.push_back("requested " + std::to_string(options.numberOfPartitions) +
+      " partitions for " + std::to_string(input.numberOfTets()) + " tetrahedra; using " +
+      std::to_string(result.numberOfPartitions));
+  }
+  else if (input.numberOfTets() == 0)
+  {
+    result.numberOfPartitions = 1;
+  }
+
+  try
+  {
+    status = runPipeline(input, options, result);
+  }
+  catch (const std::bad_alloc&)
+  {
+    status = Status::failure("out of memory");
+  }
+  catch (const std::exception& error)
+  {
+    status = Status::failure(error.what());
+  }
+  if (!status.ok() || result.aborted)
+  {
+    const bool aborted = result.aborted;
+    auto warnings = std::move(result.warnings);
+    result = AdaptationResult();
+    result.aborted = aborted;
+    result.warnings = std::move(warnings);
+  }
+  result.seconds.total = secondsSince(start);
+  if (options.progress)
+  {
+    options.progress(1.0, "done");
+  }
+  return status;
+}
+
+} // namespace cgmesh

@@ -1,0 +1,70 @@
+// The coarse-grained adaptation pipeline: partition, partition graph, colouring, the parallel
+// colour loop (heal, adapt, post), merge. VTK-free; the VTK filter and the tests call adaptMesh().
+#ifndef cgmesh_AdaptationDriver_h
+#define cgmesh_AdaptationDriver_h
+
+#include "MeshMerge.h"
+#include "Status.h"
+#include "TetMesh.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cgmesh
+{
+
+struct AdaptationOptions
+{
+  int numberOfPartitions = 1024; // clamped (with a warning) when the mesh is too small
+  int numberOfIterations = 1;    // full passes of the colour loop
+  double maximumEdgeLength = 0;  // absolute split threshold; used when > 0
+  double edgeLengthFactor = 0.5; // else threshold = factor * mean input edge length
+  int numberOfThreads = 0;       // 0 = all available cores
+  std::string coloring = "greedy";
+
+  // Called on the calling thread only: fraction in [0, 1] and a short stage name.
+  std::function<void(double fraction, const char* stage)> progress;
+  // Polled on the calling thread between colours; returning true aborts the run.
+  std::function<bool()> abortRequested;
+};
+
+// Wall-clock seconds per phase. heal, adapt and post add up the per-colour parallel loops.
+struct PhaseSeconds
+{
+  double partition = 0; // METIS on the dual graph
+  double graph = 0;     // partition graph
+  double color = 0;     // colouring
+  double heal = 0;      // reading neighbours' outboxes
+  double adapt = 0;     // template refinement, posting outboxes
+  double post = 0;      // global numbering of new points after each colour
+  double merge = 0;     // joining partitions, point provenance
+  double total = 0;
+};
+
+struct AdaptationResult
+{
+  TetMesh mesh;                     // merged, conforming, no unused points
+  std::vector<CellId> parentCell;   // per output tet: the input tet it came from
+  std::vector<int> partitionOfCell; // per output tet
+  std::vector<int> colorOfCell;     // per output tet
+  PointProvenance provenance;       // per output point, over input point ids
+  int numberOfPartitions = 0;       // after clamping
+  int numberOfColors = 0;
+  int numberOfThreads = 0;        // threads actually used
+  double edgeLengthThreshold = 0; // the absolute threshold that was applied
+  std::int64_t healedSplits = 0;  // interface splits taken over from a neighbour's outbox
+  std::int64_t createdSplits = 0; // edge splits made (each new point once)
+  bool aborted = false;
+  PhaseSeconds seconds;
+  std::vector<std::string> warnings;
+};
+
+// Refines `input` (left untouched). On failure the Status carries a one-line message and
+// `result` holds no mesh.
+Status adaptMesh(const TetMesh& input, const AdaptationOptions& options, AdaptationResult& result);
+
+} // namespace cgmesh
+
+#endif

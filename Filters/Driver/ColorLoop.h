@@ -1,0 +1,46 @@
+// The parallel colour loop: for each iteration, for each colour in order, all partitions of that
+// colour at once: heal from processed neighbours' outboxes, refine, post; then give the new points
+// global ids in partition order.
+#ifndef cgmesh_ColorLoop_h
+#define cgmesh_ColorLoop_h
+
+#include "AdaptationDriver.h"
+#include "PartitionGraph.h"
+#include "PartitionRefiner.h"
+#include "TemplateTable.h"
+
+#include <vector>
+
+namespace cgmesh
+{
+
+// The evolving global state of one adaptation run.
+struct AdaptationState
+{
+  std::vector<PartitionMesh> partitions;
+  std::vector<double> coordinates; // all global points
+  PointId inputPointCount = 0;
+  std::vector<EdgeKey> newPointParents; // for global points from inputPointCount on
+};
+
+struct ColorLoopSetup
+{
+  const PartitionGraph* graph = nullptr;
+  const std::vector<int>* colorOfPartition = nullptr;
+  int numberOfColors = 0;
+  int numberOfIterations = 1;
+  int threads = 1;
+  double squaredThreshold = 0;
+  const TemplateTable* templates = nullptr;
+};
+
+// Runs all iterations. Sets result.aborted (and returns success) when options.abortRequested
+// says so between two colours.
+Status runColorLoop(const ColorLoopSetup& setup,
+  const AdaptationOptions& options,
+  AdaptationState& state,
+  AdaptationResult& result);
+
+} // namespace cgmesh
+
+#endif

@@ -1,0 +1,22 @@
+// The project's single threading choke point: every parallel loop goes through runParallel().
+#ifndef cgmesh_ParallelFor_h
+#define cgmesh_ParallelFor_h
+
+#include "Status.h"
+
+#include <cstdint>
+#include <functional>
+
+namespace cgmesh
+{
+
+// Threads used for a request: 0 means every available core.
+int resolveThreadCount(int requested);
+
+// Calls body(i) for i in [0, count) on `threads` threads, dynamically scheduled. Exceptions never
+// leave the parallel region: the first one is reported as a failed Status after the loop.
+Status runParallel(int threads, std::int64_t count, const std::function<void(std::int64_t)>& body);
+
+} // namespace cgmesh
+
+#endif

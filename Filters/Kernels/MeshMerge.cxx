@@ -1,0 +1,136 @@
+#include "MeshMerge.h"
+
+#include <algorithm>
+#include <new>
+
+namespace cgmesh
+{
+namespace
+{
+
+// Weights of every global point over input points. A new point is the midpoint of its parent
+// edge, whose end points have smaller ids, so one pass in id order suffices.
+PointProvenance expandProvenance(PointId inputPointCount,
+  const std::vector<EdgeKey>& newPointParents)
+{
+  PointProvenance all;
+  const PointId total = inputPointCount + static_cast<PointId>(newPointParents.size());
+  all.offsets.reserve(total + 1);
+  all.offsets.push_back(0);
+  for (PointId p = 0; p < inputPointCount; ++p)
+  {
+    all.sources.push_back(p);
+    all.weights.push_back(1.0);
+    all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
+  }
+  std::vector<std::pair<PointId, double>> terms;
+  for (const EdgeKey& parents : newPointParents)
+  {
+    terms.clear();
+    for (PointId parent : { parents.low, parents.high })
+    {
+      for (std::int64_t k = all.offsets[parent]; k < all.offsets[parent + 1]; ++k)
+      {
+        terms.emplace_back(all.sources[k], 0.5 * all.weights[k]);
+      }
+    }
+    std::sort(terms.begin(), terms.end());
+    for (std::size_t k = 0; k < terms.size(); ++k)
+    {
+      if (k + 1 < terms.size() && terms[k + 1].first == terms[k].first)
+      {
+        terms[k + 1].second += terms[k].second;
+        continue;
+      }
+      all.sources.push_back(terms[k].first);
+      all.weights.push_back(terms[k].second);
+    }
+    all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
+  }
+  return all;
+}
+
+} // namespace
+
+Status mergePartitions(const std::vector<PartitionMesh>& partitions,
+  const std::vector<double>& coordinates,
+  PointId inputPointCount,
+  const std::vector<EdgeKey>& newPointParents,
+  MergedMesh& merged)
+{
+  try
+  {
+    const PointId globalCount = static_cast<PointId>(coordinates.size() / 3);
+    std::vector<PointId> outputIdOf(globalCount, -1);
+    for (const PartitionMesh& partition : partitions)
+    {
+      for (const Tet& tet : partition.tets)
+      {
+        for (PointId p : tet)
+        {
+          outputIdOf[p] = 0;
+        }
+      }
+    }
+    PointId outputCount = 0;
+    for (PointId p = 0; p < globalCount; ++p)
+    {
+      if (outputIdOf[p] == 0)
+      {
+        outputIdOf[p] = outputCount++;
+      }
+    }
+    merged = MergedMesh();
+    merged.removedPoints = globalCount - outputCount;
+
+    const PointProvenance all = expandProvenance(inputPointCount, newPointParents);
+    merged.mesh.coordinates.reserve(3 * outputCount);
+    merged.provenance.offsets.reserve(outputCount + 1);
+    merged.provenance.offsets.push_back(0);
+    for (PointId p = 0; p < globalCount; ++p)
+    {
+      if (outputIdOf[p] < 0)
+      {
+        continue;
+      }
+      merged.mesh.coordinates.insert(merged.mesh.coordinates.end(),
+        coordinates.begin() + 3 * p,
+        coordinates.begin() + 3 * p + 3);
+      merged.provenance.sources.insert(merged.provenance.sources.end(),
+        all.sources.begin() + all.offsets[p],
+        all.sources.begin() + all.offsets[p + 1]);
+      merged.provenance.weights.insert(merged.provenance.weights.end(),
+        all.weights.begin() + all.offsets[p],
+        all.weights.begin() + all.offsets[p + 1]);
+      merged.provenance.offsets.push_back(
+        static_cast<std::int64_t>(merged.provenance.sources.size()));
+    }
+
+    const bool hasRegions = std::any_of(partitions.begin(),
+      partitions.end(),
+      [](const PartitionMesh& partition) { return !partition.regions.empty(); });
+    for (std::size_t part = 0; part < partitions.size(); ++part)
+    {
+      const PartitionMesh& partition = partitions[part];
+      for (std::size_t t = 0; t < partition.tets.size(); ++t)
+      {
+        const Tet& tet = partition.tets[t];
+        merged.mesh.tets.push_back(
+          { outputIdOf[tet[0]], outputIdOf[tet[1]], outputIdOf[tet[2]], outputIdOf[tet[3]] });
+        merged.parentCell.push_back(partition.parentCells[t]);
+        merged.partitionOfCell.push_back(static_cast<int>(part));
+        if (hasRegions)
+        {
+          merged.mesh.regions.push_back(partition.regions[t]);
+        }
+      }
+    }
+  }
+  catch (const std::bad_alloc&)
+  {
+    return Status::failure("out of memory while merging partitions");
+  }
+  return Status::success();
+}
+
+} // namespace cgmesh

@@ -1,0 +1,46 @@
+// Joins the refined partitions into one conforming mesh: drops points no tet uses, numbers the
+// rest in their global order (each interface point appears once: partitions share global ids),
+// and expresses every output point as a weighted sum of input points for data interpolation.
+#ifndef cgmesh_MeshMerge_h
+#define cgmesh_MeshMerge_h
+
+#include "EdgeSplits.h"
+#include "PartitionRefiner.h"
+#include "Status.h"
+#include "TetMesh.h"
+
+#include <vector>
+
+namespace cgmesh
+{
+
+// Output point i is the weighted sum of input points
+// sources[offsets[i] .. offsets[i + 1]) with the matching weights: linear interpolation of point
+// data. Input points that survive have a single source with weight 1.
+struct PointProvenance
+{
+  std::vector<std::int64_t> offsets;
+  std::vector<PointId> sources;
+  std::vector<double> weights;
+};
+
+struct MergedMesh
+{
+  TetMesh mesh;
+  std::vector<CellId> parentCell;   // per output tet: the input tet it came from
+  std::vector<int> partitionOfCell; // per output tet
+  PointProvenance provenance;       // per output point, over input point ids
+  PointId removedPoints = 0;        // points no tet uses (unused input points)
+};
+
+// `coordinates` holds all global points; points from `inputPointCount` on were created by
+// splitting the edges in `newPointParents` (one entry per created point, in id order).
+Status mergePartitions(const std::vector<PartitionMesh>& partitions,
+  const std::vector<double>& coordinates,
+  PointId inputPointCount,
+  const std::vector<EdgeKey>& newPointParents,
+  MergedMesh& merged);
+
+} // namespace cgmesh
+
+#endif

@@ -1,0 +1,235 @@
+#include "PartitionRefiner.h"
+
+#include "Geometry.h"
+
+#include <algorithm>
+#include <new>
+
+namespace cgmesh
+{
+namespace
+{
+
+PointId provisionalId(std::size_t localIndex)
+{
+  return -static_cast<PointId>(localIndex) - 1;
+}
+
+class SplitSession
+{
+public:
+  SplitSession(const RefinementContext& context,
+    const EdgeMidpointMap& received,
+    PartitionRefinement& refinement)
+    : Context(context)
+    , Received(received)
+    , Refinement(refinement)
+  {
+  }
+
+  const double* coordinatesOf(PointId id) const
+  {
+    return id >= 0 ? this->Context.coordinates->data() + 3 * id
+                   : this->Refinement.newCoordinates.data() + 3 * (-id - 1);
+  }
+
+  bool isLong(PointId a, PointId b) const
+  {
+    const double* pa = this->coordinatesOf(std::min(a, b));
+    const double* pb = this->coordinatesOf(std::max(a, b));
+    return squaredDistance(pa, pb) > this->Context.squaredThreshold;
+  }
+
+  // The midpoint of edge (a, b): the one a neighbour inserted, one made earlier in this
+  // partition, or a new one.
+  PointId midpointOf(PointId a, PointId b)
+  {
+    const EdgeKey key = EdgeKey::of(a, b);
+    const auto known = this->Created.find(key);
+    if (known != this->Created.end())
+    {
+      return known->second;
+    }
+    PointId vertex;
+    const auto healed = this->Received.find(key);
+    if (healed != this->Received.end())
+    {
+      vertex = healed->second;
+      ++this->Refinement.healedSplits;
+    }
+    else
+    {
+      vertex = this->createMidpoint(key);
+    }
+    this->Created.emplace(key, vertex);
+    return vertex;
+  }
+
+  void reserve(std::size_t expectedSplits) { this->Created.reserve(expectedSplits); }
+
+private:
+  PointId createMidpoint(const EdgeKey& key)
+  {
+    const double* pa = this->coordinatesOf(key.low);
+    const double* pb = this->coordinatesOf(key.high);
+    const PointId vertex = provisionalId(this->Refinement.newPointParents.size());
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      this->Refinement.newCoordinates.push_back(0.5 * (pa[axis] + pb[axis]));
+    }
+    this->Refinement.newPointParents.push_back(key);
+    ++this->Refinement.createdSplits;
+    const auto& interfaceVertex = *this->Context.interfaceVertex;
+    if (interfaceVertex[key.low] && interfaceVertex[key.high])
+    {
+      this->Refinement.outbox.push_back(OutboxEntry{ key, vertex });
+    }
+    return vertex;
+  }
+
+  const RefinementContext& Context;
+  const EdgeMidpointMap& Received;
+  PartitionRefinement& Refinement;
+  EdgeMidpointMap Created;
+};
+
+std::array<int, 4> cornerRanks(const Tet& tet)
+{
+  std::array<int, 4> ranks;
+  for (int i = 0; i < 4; ++i)
+  {
+    ranks[i] = 0;
+    for (int j = 0; j < 4; ++j)
+    {
+      ranks[i] += tet[j] < tet[i];
+    }
+  }
+  return ranks;
+}
+
+// For a fully split tet: the shortest of the three octahedron diagonals (ties: lowest index),
+// which gives the best-shaped children.
+int shortestDiagonal(const SplitSession& session, const std::array<PointId, 10>& vertices)
+{
+  const int axisEdge[3][2] = { { 0, 5 }, { 1, 4 }, { 2, 3 } };
+  int best = 0;
+  double bestLength = 0;
+  for (int d = 0; d < 3; ++d)
+  {
+    const double length = squaredDistance(session.coordinatesOf(vertices[4 + axisEdge[d][0]]),
+      session.coordinatesOf(vertices[4 + axisEdge[d][1]]));
+    if (d == 0 || length < bestLength)
+    {
+      best = d;
+      bestLength = length;
+    }
+  }
+  return best;
+}
+
+} // namespace
+
+std::vector<char> findInterfaceVertices(const std::vector<PartitionMesh>& partitions,
+  PointId numberOfPoints)
+{
+  std::vector<int> firstPartition(numberOfPoints, -1);
+  std::vector<char> interfaceVertex(numberOfPoints, 0);
+  for (std::size_t part = 0; part < partitions.size(); ++part)
+  {
+    for (const Tet& tet : partitions[part].tets)
+    {
+      for (PointId p : tet)
+      {
+        if (firstPartition[p] < 0)
+        {
+          firstPartition[p] = static_cast<int>(part);
+        }
+        else if (firstPartition[p] != static_cast<int>(part))
+        {
+          interfaceVertex[p] = 1;
+        }
+      }
+    }
+  }
+  return interfaceVertex;
+}
+
+Status refinePartition(PartitionMesh& partition,
+  const RefinementContext& context,
+  const EdgeMidpointMap& received,
+  PartitionRefinement& refinement)
+{
+  try
+  {
+    SplitSession session(context, received, refinement);
+    session.reserve(partition.tets.size());
+    const bool hasRegions = !partition.regions.empty();
+    PartitionMesh refined;
+    refined.tets.reserve(partition.tets.size() * 2);
+    refined.parentCells.reserve(partition.tets.size() * 2);
+
+    for (std::size_t t = 0; t < partition.tets.size(); ++t)
+    {
+      const Tet& tet = partition.tets[t];
+      std::array<PointId, 10> vertices = { tet[0], tet[1], tet[2], tet[3] };
+      int splitMask = 0;
+      for (int e = 0; e < 6; ++e)
+      {
+        const PointId a = tet[TetEdgeCorners[e][0]];
+        const PointId b = tet[TetEdgeCorners[e][1]];
+        if (session.isLong(a, b))
+        {
+          splitMask |= 1 << e;
+          vertices[4 + e] = session.midpointOf(a, b);
+        }
+      }
+      auto emit = [&](const Tet& child)
+      {
+        refined.tets.push_back(child);
+        refined.parentCells.push_back(partition.parentCells[t]);
+        if (hasRegions)
+        {
+          refined.regions.push_back(partition.regions[t]);
+        }
+      };
+      if (splitMask == 0)
+      {
+        emit(tet);
+        continue;
+      }
+      const std::vector<LocalTet>& children = splitMask == 63
+        ? context.templates->fullSplit(shortestDiagonal(session, vertices))
+        : context.templates->partialSplit(splitMask, cornerRanks(tet));
+      for (const LocalTet& child : children)
+      {
+        emit({ vertices[child[0]], vertices[child[1]], vertices[child[2]], vertices[child[3]] });
+      }
+    }
+    partition = std::move(refined);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return Status::failure("out of memory while refining a partition");
+  }
+  return Status::success();
+}
+
+void finalizeNewPoints(PartitionMesh& partition,
+  PartitionRefinement& refinement,
+  PointId firstGlobalId)
+{
+  auto globalId = [firstGlobalId](PointId id) { return id >= 0 ? id : firstGlobalId + (-id - 1); };
+  for (Tet& tet : partition.tets)
+  {
+    for (PointId& id : tet)
+    {
+      id = globalId(id);
+    }
+  }
+  for (OutboxEntry& entry : refinement.outbox)
+  {
+    entry.vertex = globalId(entry.vertex);
+  }
+}
+
+} // namespace cgmesh

@@ -1,0 +1,65 @@
+// Serial template refinement of one partition: heals the splits its processed neighbours made on
+// shared edges, splits every other edge longer than the threshold, and posts the splits of
+// interface edges to its outbox.
+#ifndef cgmesh_PartitionRefiner_h
+#define cgmesh_PartitionRefiner_h
+
+#include "EdgeSplits.h"
+#include "Status.h"
+#include "TemplateTable.h"
+#include "TetMesh.h"
+
+#include <vector>
+
+namespace cgmesh
+{
+
+// The tets one partition owns, with their region and input cell of origin.
+struct PartitionMesh
+{
+  std::vector<Tet> tets;
+  std::vector<int> regions; // empty when the input has no regions
+  std::vector<CellId> parentCells;
+};
+
+// Read-only state shared by all partitions during one iteration.
+struct RefinementContext
+{
+  const std::vector<double>* coordinates = nullptr;   // global points, xyz
+  const std::vector<char>* interfaceVertex = nullptr; // 1 when a point lies in 2+ partitions
+  double squaredThreshold = 0;                        // split edges with a larger squared length
+  const TemplateTable* templates = nullptr;
+};
+
+// Vertices a partition created. Until the colour is finished they carry provisional ids
+// -(k + 1) for the k-th new vertex; finalizeNewPoints() turns them into global ids.
+struct PartitionRefinement
+{
+  std::vector<double> newCoordinates;   // xyz per new vertex
+  std::vector<EdgeKey> newPointParents; // the edge each new vertex splits
+  Outbox outbox;
+  std::int64_t healedSplits = 0;  // splits taken from neighbours' outboxes
+  std::int64_t createdSplits = 0; // splits this partition made itself
+};
+
+// Marks the points that lie in tets of two or more partitions: only edges between two such points
+// can be shared, so only their splits go to outboxes.
+std::vector<char> findInterfaceVertices(const std::vector<PartitionMesh>& partitions,
+  PointId numberOfPoints);
+
+// Refines `partition` in place. The tets' corners are global ids; the result may reference
+// provisional ids (see above).
+Status refinePartition(PartitionMesh& partition,
+  const RefinementContext& context,
+  const EdgeMidpointMap& received,
+  PartitionRefinement& refinement);
+
+// Rewrites provisional ids of the partition's tets and outbox into global ids starting at
+// `firstGlobalId`.
+void finalizeNewPoints(PartitionMesh& partition,
+  PartitionRefinement& refinement,
+  PointId firstGlobalId);
+
+} // namespace cgmesh
+
+#endif

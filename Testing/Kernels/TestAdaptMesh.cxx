@@ -1,0 +1,156 @@
+// The whole pipeline through adaptMesh(): conformity, conservation, exact tet counts, point
+// provenance and bit-identical output for any thread count.
+#include "AdaptationDriver.h"
+#include "CubeGenerator.h"
+#include "MeshValidation.h"
+#include "TestHarness.h"
+
+#include <cstring>
+
+using namespace cgmesh;
+
+namespace
+{
+
+TetMesh cubeWithRegions(int n)
+{
+  TetMesh mesh;
+  CHECK(generateKuhnCube(n, mesh).ok());
+  for (const Tet& tet : mesh.tets)
+  {
+    double x = 0;
+    for (PointId p : tet)
+    {
+      x += mesh.point(p)[0];
+    }
+    mesh.regions.push_back(x < 2.0 ? 7 : -3); // centroid left or right of x = 0.5
+  }
+  return mesh;
+}
+
+AdaptationResult refine(const TetMesh& input, int partitions, int threads, int iterations)
+{
+  AdaptationOptions options;
+  options.numberOfPartitions = partitions;
+  options.numberOfThreads = threads;
+  options.numberOfIterations = iterations;
+  options.edgeLengthFactor = 0.25;
+  AdaptationResult result;
+  const Status status = adaptMesh(input, options, result);
+  CHECK(status.ok());
+  if (!status.ok())
+  {
+    std::cerr << status.message() << "\n";
+  }
+  return result;
+}
+
+bool identical(const AdaptationResult& a, const AdaptationResult& b)
+{
+  return a.mesh.coordinates.size() == b.mesh.coordinates.size() &&
+    std::memcmp(a.mesh.coordinates.data(),
+      b.mesh.coordinates.data(),
+      a.mesh.coordinates.size() * sizeof(double)) == 0 &&
+    a.mesh.tets == b.mesh.tets && a.mesh.regions == b.mesh.regions &&
+    a.parentCell == b.parentCell && a.colorOfCell == b.colorOfCell &&
+    a.partitionOfCell == b.partitionOfCell && a.provenance.sources == b.provenance.sources &&
+    a.provenance.weights == b.provenance.weights;
+}
+
+void checkRefinedCube(const TetMesh& input, const AdaptationResult& result, int iterations)
+{
+  const MeshReport before = inspectMesh(input);
+  const MeshReport after = inspectMesh(result.mesh);
+  if (!after.isValid())
+  {
+    std::cerr << after.describeProblems();
+  }
+  CHECK(after.isValid());
+  CHECK_EQUAL(result.mesh.numberOfTets(), input.numberOfTets() << (3 * iterations));
+  CHECK_CLOSE(after.volume, before.volume, 1e-12);
+  CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
+  CHECK_CLOSE(after.regionInterfaceArea, before.regionInterfaceArea, 1e-12);
+  CHECK_EQUAL(after.regionVolumes.size(), before.regionVolumes.size());
+  for (const auto& region : before.regionVolumes)
+  {
+    CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
+  }
+  // A linear field interpolated through the provenance weights is reproduced exactly.
+  for (PointId p = 0; p < result.mesh.numberOfPoints(); ++p)
+  {
+    double interpolated = 0;
+    for (std::int64_t k = result.provenance.offsets[p]; k < result.provenance.offsets[p + 1]; ++k)
+    {
+      const double* source = input.point(result.provenance.sources[k]);
+      interpolated += result.provenance.weights[k] * (source[0] + 2 * source[1] + 3 * source[2]);
+    }
+    const double* point = result.mesh.point(p);
+    CHECK_CLOSE(interpolated, point[0] + 2 * point[1] + 3 * point[2], 1e-12);
+  }
+}
+
+void test_cube_refinement_at_partition_counts()
+{
+  const TetMesh input = cubeWithRegions(6);
+  for (int partitions : { 1, 4, 64, 1024 })
+  {
+    const AdaptationResult serial = refine(input, partitions, 1, 2);
+    checkRefinedCube(input, serial, 2);
+    CHECK_EQUAL(serial.numberOfPartitions, partitions > 1296 ? 1296 : partitions);
+    CHECK(serial.numberOfColors >= (partitions > 1 ? 2 : 1));
+    for (int threads : { 2, 3 })
+    {
+      CHECK(identical(serial, refine(input, partitions, threads, 2)));
+    }
+  }
+}
+
+void test_partition_count_clamped_to_tets()
+{
+  TetMesh input;
+  CHECK(generateKuhnCube(1, input).ok());
+  const AdaptationResult result = refine(input, 1024, 2, 1);
+  CHECK_EQUAL(result.numberOfPartitions, 6);
+  CHECK_EQUAL(result.warnings.size(), 1u);
+  checkRefinedCube(input, result, 1);
+}
+
+void test_bad_options_are_refused()
+{
+  TetMesh input;
+  CHECK(generateKuhnCube(2, input).ok());
+  AdaptationOptions options;
+  AdaptationResult result;
+  options.coloring = "no-such-colouring";
+  CHECK(!adaptMesh(input, options, result).ok());
+  CHECK(result.mesh.tets.empty());
+  options = AdaptationOptions();
+  options.edgeLengthFactor = 0;
+  CHECK(!adaptMesh(input, options, result).ok());
+  input.tets.push_back({ 0, 1, 2, 999 });
+  CHECK(!adaptMesh(input, AdaptationOptions(), result).ok());
+}
+
+void test_abort_between_colours()
+{
+  const TetMesh input = cubeWithRegions(4);
+  AdaptationOptions options;
+  options.numberOfPartitions = 16;
+  int polls = 0;
+  options.abortRequested = [&polls]() { return ++polls > 1; };
+  AdaptationResult result;
+  CHECK(adaptMesh(input, options, result).ok());
+  CHECK(result.aborted);
+  CHECK(result.mesh.tets.empty());
+}
+
+} // namespace
+
+int main()
+{
+  test_cube_refinement_at_partition_counts();
+  test_partition_count_clamped_to_tets();
+  test_bad_options_are_refused();
+  test_abort_between_colours();
+  return cgmesh_test::finish("TestAdaptMesh");
+}

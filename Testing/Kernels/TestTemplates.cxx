@@ -1,0 +1,246 @@
+// Template refinement of a single tet: every split pattern tiles its parent with positive tets,
+// and two tets sharing a face always triangulate it identically.
+#include "Geometry.h"
+#include "MeshValidation.h"
+#include "TemplateTable.h"
+#include "TestHarness.h"
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+using namespace cgmesh;
+
+namespace
+{
+
+// An irregular, positively oriented tet.
+const double Corners[4][3] = { { 0.1, 0.0, 0.05 },
+  { 1.3, 0.2, 0.0 },
+  { 0.3, 1.1, 0.1 },
+  { 0.2, 0.4, 0.9 } };
+
+std::vector<LocalTet> templateFor(const TemplateTable& table,
+  int mask,
+  const std::array<int, 4>& ranks,
+  int diagonal)
+{
+  if (mask == 0)
+  {
+    return { LocalTet{ 0, 1, 2, 3 } };
+  }
+  return mask == 63 ? table.fullSplit(diagonal) : table.partialSplit(mask, ranks);
+}
+
+TetMesh childMesh(const std::vector<LocalTet>& children)
+{
+  TetMesh mesh;
+  for (int c = 0; c < 4; ++c)
+  {
+    mesh.coordinates.insert(mesh.coordinates.end(), Corners[c], Corners[c] + 3);
+  }
+  for (const auto& edge : TetEdgeCorners)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      mesh.coordinates.push_back(0.5 * (Corners[edge[0]][axis] + Corners[edge[1]][axis]));
+    }
+  }
+  for (const LocalTet& child : children)
+  {
+    mesh.tets.push_back({ child[0], child[1], child[2], child[3] });
+  }
+  return mesh;
+}
+
+void checkOneCase(const TemplateTable& table,
+  int mask,
+  const std::array<int, 4>& ranks,
+  int diagonal)
+{
+  const TetMesh parent = childMesh({ LocalTet{ 0, 1, 2, 3 } });
+  const MeshReport parentReport = inspectMesh(parent);
+  const TetMesh children = childMesh(templateFor(table, mask, ranks, diagonal));
+  const MeshReport report = inspectMesh(children);
+  CHECK_EQUAL(report.invertedTets, 0);
+  CHECK_EQUAL(report.degenerateTets, 0);
+  CHECK_EQUAL(report.overSharedFaces, 0);
+  CHECK_EQUAL(report.misorientedFacePairs, 0);
+  CHECK_CLOSE(report.volume, parentReport.volume, 1e-12);
+  CHECK_CLOSE(report.boundaryArea, parentReport.boundaryArea, 1e-12);
+
+  // The children's boundary is exactly the face rule's triangulation of the parent's faces.
+  std::set<std::array<int, 3>> expected;
+  const std::array<std::array<int, 3>, 4> faces = {
+    { { 1, 2, 3 }, { 0, 2, 3 }, { 0, 1, 3 }, { 0, 1, 2 } }
+  };
+  for (const auto& face : faces)
+  {
+    for (auto triangle : triangulateFace(face, mask, ranks))
+    {
+      std::sort(triangle.begin(), triangle.end());
+      expected.insert(triangle);
+    }
+  }
+  std::multiset<std::array<int, 3>> childFaces;
+  for (const Tet& tet : children.tets)
+  {
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      std::array<int, 3> triangle;
+      int n = 0;
+      for (int i = 0; i < 4; ++i)
+      {
+        if (i != skip)
+        {
+          triangle[n++] = static_cast<int>(tet[i]);
+        }
+      }
+      std::sort(triangle.begin(), triangle.end());
+      childFaces.insert(triangle);
+    }
+  }
+  std::set<std::array<int, 3>> boundary;
+  for (const auto& triangle : childFaces)
+  {
+    if (childFaces.count(triangle) == 1)
+    {
+      boundary.insert(triangle);
+    }
+  }
+  CHECK(boundary == expected);
+
+  const int splitCount = __builtin_popcount(mask);
+  if (splitCount == 1)
+  {
+    CHECK_EQUAL(children.tets.size(), 2u);
+  }
+  if (mask == 63)
+  {
+    CHECK_EQUAL(children.tets.size(), 8u);
+  }
+}
+
+void test_every_template_case()
+{
+  const TemplateTable table;
+  std::array<int, 4> ranks = { 0, 1, 2, 3 };
+  int cases = 0;
+  do
+  {
+    for (int mask = 1; mask < 63; ++mask)
+    {
+      checkOneCase(table, mask, ranks, 0);
+      ++cases;
+    }
+  } while (std::next_permutation(ranks.begin(), ranks.end()));
+  for (int diagonal = 0; diagonal < 3; ++diagonal)
+  {
+    checkOneCase(table, 63, ranks, diagonal);
+    ++cases;
+  }
+  CHECK_EQUAL(cases, 62 * 24 + 3);
+  // Two opposite edges split: four tets around the segment joining their midpoints.
+  CHECK_EQUAL(table.partialSplit(1 | 32, ranks).size(), 4u);
+}
+
+// Vertex identity for comparing the two sides of a face: a corner's global id, or the edge a
+// midpoint splits.
+using VertexKey = std::pair<int, int>;
+
+std::set<std::array<VertexKey, 3>> facePieces(const TemplateTable& table,
+  const std::array<int, 4>& globalIds,
+  int mask,
+  const std::set<int>& faceIds)
+{
+  std::array<int, 4> ranks;
+  for (int i = 0; i < 4; ++i)
+  {
+    ranks[i] = static_cast<int>(
+      std::count_if(globalIds.begin(), globalIds.end(), [&](int g) { return g < globalIds[i]; }));
+  }
+  auto keyOf = [&](int local) -> VertexKey
+  {
+    if (local < 4)
+    {
+      return { globalIds[local], globalIds[local] };
+    }
+    const int a = globalIds[TetEdgeCorners[local - 4][0]];
+    const int b = globalIds[TetEdgeCorners[local - 4][1]];
+    return { std::min(a, b), std::max(a, b) };
+  };
+  auto onFace = [&](const VertexKey& key)
+  { return faceIds.count(key.first) && faceIds.count(key.second); };
+  std::set<std::array<VertexKey, 3>> pieces;
+  for (const LocalTet& child : templateFor(table, mask, ranks, 0))
+  {
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      std::array<VertexKey, 3> triangle;
+      int n = 0;
+      for (int i = 0; i < 4; ++i)
+      {
+        if (i != skip)
+        {
+          triangle[n++] = keyOf(child[i]);
+        }
+      }
+      if (onFace(triangle[0]) && onFace(triangle[1]) && onFace(triangle[2]))
+      {
+        std::sort(triangle.begin(), triangle.end());
+        pieces.insert(triangle);
+      }
+    }
+  }
+  return pieces;
+}
+
+// Tets (a, b, c, d) and (a, c, b, e) share face abc. For every global numbering of the five
+// points and every split pattern that agrees on the face, both sides cut the face identically.
+void test_shared_face_agreement()
+{
+  const TemplateTable table;
+  std::array<int, 5> ids = { 0, 1, 2, 3, 4 };
+  int comparisons = 0;
+  do
+  {
+    const int a = ids[0], b = ids[1], c = ids[2], d = ids[3], e = ids[4];
+    const std::set<int> face = { a, b, c };
+    for (int faceMask = 0; faceMask < 8; ++faceMask)
+    {
+      // Local edge order: (0,1) (0,2) (0,3) (1,2) (1,3) (2,3).
+      // First tet (a,b,c,d): ab = edge 0, ac = edge 1, bc = edge 3.
+      const int first = (faceMask & 1 ? 1 : 0) | (faceMask & 2 ? 2 : 0) | (faceMask & 4 ? 8 : 0);
+      // Second tet (a,c,b,e): ac = edge 0, ab = edge 1, bc = edge 3.
+      const int second = (faceMask & 2 ? 1 : 0) | (faceMask & 1 ? 2 : 0) | (faceMask & 4 ? 8 : 0);
+      for (int firstOther = 0; firstOther < 8; ++firstOther)
+      {
+        const int otherEdges =
+          (firstOther & 1 ? 4 : 0) | (firstOther & 2 ? 16 : 0) | (firstOther & 4 ? 32 : 0);
+        const auto pieces1 = facePieces(table, { a, b, c, d }, first | otherEdges, face);
+        for (int secondOther = 0; secondOther < 8; ++secondOther)
+        {
+          const int otherEdges2 =
+            (secondOther & 1 ? 4 : 0) | (secondOther & 2 ? 16 : 0) | (secondOther & 4 ? 32 : 0);
+          const auto pieces2 = facePieces(table, { a, c, b, e }, second | otherEdges2, face);
+          CHECK(pieces1 == pieces2);
+          CHECK_EQUAL(pieces1.size(),
+            static_cast<std::size_t>(faceMask == 0  ? 1
+                : __builtin_popcount(faceMask) == 3 ? 4
+                                                    : __builtin_popcount(faceMask) + 1));
+          ++comparisons;
+        }
+      }
+    }
+  } while (std::next_permutation(ids.begin(), ids.end()));
+  CHECK_EQUAL(comparisons, 120 * 8 * 8 * 8);
+}
+
+} // namespace
+
+int main()
+{
+  test_every_template_case();
+  test_shared_face_agreement();
+  return cgmesh_test::finish("TestTemplates");
+}
