@@ -1,11 +1,13 @@
 #include "AdaptationDriver.h"
 
 #include "ColorLoop.h"
+#include "ColoringSupport.h"
 #include "Geometry.h"
 #include "MeshPartitioner.h"
 #include "ParallelFor.h"
 #include "PartitionColoring.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <new>
@@ -49,9 +51,13 @@ Status validateInput(const TetMesh& input, const AdaptationOptions& options)
   {
     return Status::failure("the number of iterations must not be negative");
   }
-  if (options.numberOfPartitions < 1)
+  if (!options.partitionByRegion && options.numberOfPartitions < 1)
   {
     return Status::failure("the number of partitions must be at least 1");
+  }
+  if (options.partitionByRegion && !input.hasRegions() && !input.tets.empty())
+  {
+    return Status::failure("partitioning by region needs a region array");
   }
   if (!(options.maximumEdgeLength > 0) && !(options.edgeLengthFactor > 0))
   {
@@ -75,9 +81,8 @@ double meanTetEdgeLength(const TetMesh& mesh)
   return mesh.tets.empty() ? 0 : sum / (6.0 * static_cast<double>(mesh.tets.size()));
 }
 
-void distributeTets(const TetMesh& input,
-  const std::vector<int>& partitionOfCell,
-  AdaptationState& state)
+void distributeTets(
+  const TetMesh& input, const std::vector<int>& partitionOfCell, AdaptationState& state)
 {
   for (CellId t = 0; t < input.numberOfTets(); ++t)
   {
@@ -93,15 +98,15 @@ void distributeTets(const TetMesh& input,
   state.inputPointCount = input.numberOfPoints();
 }
 
-Status partitionAndColor(const TetMesh& input,
-  const AdaptationOptions& options,
-  std::vector<int>& partitionOfCell,
-  PartitionGraph& graph,
-  std::vector<int>& colorOfPartition,
+Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
+  std::vector<int>& partitionOfCell, PartitionGraph& graph, std::vector<int>& colorOfPartition,
   AdaptationResult& result)
 {
   auto start = Clock::now();
-  Status status = partitionMesh(input, result.numberOfPartitions, partitionOfCell);
+  Status status = options.partitionByRegion
+    ? partitionByRegion(
+        input, options.partitionsPerRegion, partitionOfCell, result.numberOfPartitions)
+    : partitionMesh(input, result.numberOfPartitions, partitionOfCell);
   result.seconds.partition = secondsSince(start);
   if (!status.ok())
   {
@@ -122,7 +127,9 @@ Status partitionAndColor(const TetMesh& input,
   const int threads = result.numberOfThreads;
   const ParallelFor parallelFor =
     [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
-  { runParallel(threads, count, body); };
+  {
+    runParallel(threads, count, body);
+  };
   status = coloring->color(graph, parallelFor, colorOfPartition);
   result.seconds.color = secondsSince(start);
   if (status.ok() && !isProperColoring(graph, colorOfPartition))
@@ -131,6 +138,13 @@ Status partitionAndColor(const TetMesh& input,
       "' gave two adjacent partitions the same colour");
   }
   result.numberOfColors = countColors(colorOfPartition);
+  result.partitionsPerColor = colorSizes(colorOfPartition, result.numberOfColors);
+  if (result.numberOfColors > 0)
+  {
+    const double mean = static_cast<double>(result.numberOfPartitions) / result.numberOfColors;
+    result.colorBalance =
+      *std::max_element(result.partitionsPerColor.begin(), result.partitionsPerColor.end()) / mean;
+  }
   return status;
 }
 
@@ -183,9 +197,11 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   result.partitionOfCell = std::move(merged.partitionOfCell);
   result.provenance = std::move(merged.provenance);
   result.colorOfCell.resize(result.partitionOfCell.size());
+  result.cellsPerColor.assign(result.numberOfColors, 0);
   for (std::size_t t = 0; t < result.partitionOfCell.size(); ++t)
   {
     result.colorOfCell[t] = colorOfPartition[result.partitionOfCell[t]];
+    ++result.cellsPerColor[result.colorOfCell[t]];
   }
   if (merged.removedPoints > 0)
   {
@@ -211,7 +227,8 @@ Status adaptMesh(const TetMesh& input, const AdaptationOptions& options, Adaptat
     ? options.maximumEdgeLength
     : options.edgeLengthFactor * meanTetEdgeLength(input);
   result.numberOfPartitions = options.numberOfPartitions;
-  if (input.numberOfTets() > 0 && options.numberOfPartitions > input.numberOfTets())
+  if (!options.partitionByRegion && input.numberOfTets() > 0 &&
+    options.numberOfPartitions > input.numberOfTets())
   {
     result.numberOfPartitions = static_cast<int>(input.numberOfTets());
     result.warnings.push_back("requested " + std::to_string(options.numberOfPartitions) +

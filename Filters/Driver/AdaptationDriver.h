@@ -22,7 +22,10 @@ struct AdaptationOptions
   double maximumEdgeLength = 0;  // absolute split threshold; used when > 0
   double edgeLengthFactor = 0.5; // else threshold = factor * mean input edge length
   int numberOfThreads = 0;       // 0 = all available cores
-  std::string coloring = "greedy";
+  std::string coloring =
+    "greedy-lu";                  // see coloringNames(): greedy, greedy-lu, iterative, recoloring
+  bool partitionByRegion = false; // cut along regions (needs input regions) instead of METIS
+  int partitionsPerRegion = 1;    // with partitionByRegion: METIS parts within each region
 
   // Called on the calling thread only: fraction in [0, 1] and a short stage name.
   std::function<void(double fraction, const char* stage)> progress;
@@ -56,6 +59,9 @@ struct AdaptationResult
   double edgeLengthThreshold = 0; // the absolute threshold that was applied
   std::int64_t healedSplits = 0;  // interface splits taken over from a neighbour's outbox
   std::int64_t createdSplits = 0; // edge splits made (each new point once)
+  std::vector<std::int64_t> partitionsPerColor; // colour population, in partitions
+  std::vector<std::int64_t> cellsPerColor;      // colour population, in output tets
+  double colorBalance = 0;                      // largest colour set / mean (partitions)
   bool aborted = false;
   PhaseSeconds seconds;
   std::vector<std::string> warnings;

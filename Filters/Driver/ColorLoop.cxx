@@ -14,8 +14,8 @@ double secondsSince(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::vector<std::vector<int>> partitionsByColor(const std::vector<int>& colorOfPartition,
-  int colors)
+std::vector<std::vector<int>> partitionsByColor(
+  const std::vector<int>& colorOfPartition, int colors)
 {
   std::vector<std::vector<int>> members(colors);
   for (std::size_t p = 0; p < colorOfPartition.size(); ++p)
@@ -27,21 +27,16 @@ std::vector<std::vector<int>> partitionsByColor(const std::vector<int>& colorOfP
 
 // Processes one colour: the parallel heal and adapt loops, then the serial numbering of the new
 // points in partition order (deterministic for any thread count), then the parallel rewrite.
-Status processColor(const ColorLoopSetup& setup,
-  const std::vector<int>& members,
-  int color,
-  const RefinementContext& context,
-  std::vector<PartitionRefinement>& refinements,
-  AdaptationState& state,
-  AdaptationResult& result)
+Status processColor(const ColorLoopSetup& setup, const std::vector<int>& members, int color,
+  const RefinementContext& context, std::vector<PartitionRefinement>& refinements,
+  AdaptationState& state, AdaptationResult& result)
 {
   const auto& colorOf = *setup.colorOfPartition;
   const std::int64_t count = static_cast<std::int64_t>(members.size());
   std::vector<EdgeMidpointMap> received(members.size());
 
   auto start = std::chrono::steady_clock::now();
-  Status status = runParallel(setup.threads,
-    count,
+  Status status = runParallel(setup.threads, count,
     [&](std::int64_t i)
     {
       const int p = members[i];
@@ -64,8 +59,7 @@ Status processColor(const ColorLoopSetup& setup,
 
   start = std::chrono::steady_clock::now();
   std::vector<Status> outcomes(members.size(), Status::success());
-  status = runParallel(setup.threads,
-    count,
+  status = runParallel(setup.threads, count,
     [&](std::int64_t i)
     {
       const int p = members[i];
@@ -93,16 +87,14 @@ Status processColor(const ColorLoopSetup& setup,
     firstId[i] = static_cast<PointId>(state.coordinates.size() / 3);
     state.coordinates.insert(
       state.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
-    state.newPointParents.insert(state.newPointParents.end(),
-      refinement.newPointParents.begin(),
+    state.newPointParents.insert(state.newPointParents.end(), refinement.newPointParents.begin(),
       refinement.newPointParents.end());
     result.healedSplits += refinement.healedSplits;
     result.createdSplits += refinement.createdSplits;
     refinement.newCoordinates = std::vector<double>();
     refinement.newPointParents = std::vector<EdgeKey>();
   }
-  status = runParallel(setup.threads,
-    count,
+  status = runParallel(setup.threads, count,
     [&](std::int64_t i)
     {
       const int p = members[i];
@@ -114,10 +106,8 @@ Status processColor(const ColorLoopSetup& setup,
 
 } // namespace
 
-Status runColorLoop(const ColorLoopSetup& setup,
-  const AdaptationOptions& options,
-  AdaptationState& state,
-  AdaptationResult& result)
+Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& options,
+  AdaptationState& state, AdaptationResult& result)
 {
   const auto members = partitionsByColor(*setup.colorOfPartition, setup.numberOfColors);
   const int steps = setup.numberOfIterations * setup.numberOfColors;

@@ -36,10 +36,8 @@ struct ColorLoopSetup
 
 // Runs all iterations. Sets result.aborted (and returns success) when options.abortRequested
 // says so between two colours.
-Status runColorLoop(const ColorLoopSetup& setup,
-  const AdaptationOptions& options,
-  AdaptationState& state,
-  AdaptationResult& result);
+Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& options,
+  AdaptationState& state, AdaptationResult& result);
 
 } // namespace cgmesh
 

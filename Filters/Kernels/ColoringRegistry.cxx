@@ -1,6 +1,9 @@
 // The list of colourings: adding one is a new file plus one line in `registry()`.
 #include "GreedyColoring.h"
+#include "GreedyLeastUsedColoring.h"
+#include "IterativeColoring.h"
 #include "PartitionColoring.h"
+#include "RecoloringBalance.h"
 
 #include <algorithm>
 
@@ -25,6 +28,9 @@ const std::vector<RegisteredColoring>& registry()
 {
   static const std::vector<RegisteredColoring> colorings = {
     { "greedy", &makeInstance<GreedyColoring> },
+    { "greedy-lu", &makeInstance<GreedyLeastUsedColoring> },
+    { "iterative", &makeInstance<IterativeColoring> },
+    { "recoloring", &makeInstance<RecoloringBalance> },
   };
   return colorings;
 }

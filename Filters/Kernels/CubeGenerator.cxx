@@ -40,7 +40,9 @@ Status generateKuhnGrid(const GridLines& lines, TetMesh& mesh)
     pointsAlong[axis] = static_cast<int>(values.size());
   }
   auto pointIndex = [&pointsAlong](const std::array<int, 3>& ijk) -> PointId
-  { return (static_cast<PointId>(ijk[2]) * pointsAlong[1] + ijk[1]) * pointsAlong[0] + ijk[0]; };
+  {
+    return (static_cast<PointId>(ijk[2]) * pointsAlong[1] + ijk[1]) * pointsAlong[0] + ijk[0];
+  };
 
   mesh = TetMesh();
   for (int k = 0; k < pointsAlong[2]; ++k)

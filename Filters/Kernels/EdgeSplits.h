@@ -53,8 +53,8 @@ using Outbox = std::vector<OutboxEntry>;
 
 // Healing input: every split that the given (already processed) neighbours posted. Entries for
 // edges this partition does not hold are harmless: they are only ever looked up by edge.
-inline void collectReceivedSplits(const std::vector<const Outbox*>& neighbourOutboxes,
-  EdgeMidpointMap& received)
+inline void collectReceivedSplits(
+  const std::vector<const Outbox*>& neighbourOutboxes, EdgeMidpointMap& received)
 {
   received.clear();
   std::size_t total = 0;

@@ -75,15 +75,8 @@ std::int64_t tetCountFor(double spacing)
 
 std::vector<std::string> finFetMaterialNames()
 {
-  return { "substrate",
-    "buried oxide",
-    "fin channel",
-    "source",
-    "drain",
-    "gate oxide",
-    "gate",
-    "spacer",
-    "isolation oxide" };
+  return { "substrate", "buried oxide", "fin channel", "source", "drain", "gate oxide", "gate",
+    "spacer", "isolation oxide" };
 }
 
 Status generateFinFet(std::int64_t targetTets, TetMesh& mesh)
@@ -102,9 +95,8 @@ Status generateFinFet(std::int64_t targetTets, TetMesh& mesh)
   const double spacing =
     std::abs(tetCountFor(coarse) - targetTets) <= std::abs(tetCountFor(fine) - targetTets) ? coarse
                                                                                            : fine;
-  const GridLines lines = {
-    gradedLines(XBreaks, spacing), gradedLines(YBreaks, spacing), gradedLines(ZBreaks, spacing)
-  };
+  const GridLines lines = { gradedLines(XBreaks, spacing), gradedLines(YBreaks, spacing),
+    gradedLines(ZBreaks, spacing) };
   Status status = generateKuhnGrid(lines, mesh);
   if (!status.ok())
   {

@@ -1,37 +1,24 @@
 #include "GreedyColoring.h"
 
+#include "ColoringSupport.h"
+
 namespace cgmesh
 {
 
-Status GreedyColoring::color(const PartitionGraph& graph,
-  const ParallelFor&,
-  std::vector<int>& colorOfPartition) const
+Status GreedyColoring::color(
+  const PartitionGraph& graph, const ParallelFor&, std::vector<int>& colorOfPartition) const
 {
-  const int count = graph.numberOfPartitions;
-  colorOfPartition.assign(count, -1);
-  // usedBy[c] == p marks colour c as taken by a neighbour of partition p.
-  std::vector<int> usedBy;
-  for (int p = 0; p < count; ++p)
+  colorOfPartition.assign(graph.numberOfPartitions, -1);
+  ForbiddenColors forbidden;
+  for (int p = 0; p < graph.numberOfPartitions; ++p)
   {
+    forbidden.clear();
     const int* neighbours = graph.neighboursOf(p);
     for (int i = 0; i < graph.degree(p); ++i)
     {
-      const int c = colorOfPartition[neighbours[i]];
-      if (c >= 0)
-      {
-        usedBy[c] = p;
-      }
+      forbidden.forbid(colorOfPartition[neighbours[i]]);
     }
-    int chosen = 0;
-    while (chosen < static_cast<int>(usedBy.size()) && usedBy[chosen] == p)
-    {
-      ++chosen;
-    }
-    if (chosen == static_cast<int>(usedBy.size()))
-    {
-      usedBy.push_back(-1);
-    }
-    colorOfPartition[p] = chosen;
+    colorOfPartition[p] = forbidden.firstAllowed();
   }
   return Status::success();
 }

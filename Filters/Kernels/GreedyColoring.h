@@ -11,8 +11,7 @@ class GreedyColoring : public PartitionColoring
 {
 public:
   const char* name() const override { return "greedy"; }
-  Status color(const PartitionGraph& graph,
-    const ParallelFor& parallelFor,
+  Status color(const PartitionGraph& graph, const ParallelFor& parallelFor,
     std::vector<int>& colorOfPartition) const override;
 };
 

@@ -10,8 +10,8 @@ namespace
 
 // Weights of every global point over input points. A new point is the midpoint of its parent
 // edge, whose end points have smaller ids, so one pass in id order suffices.
-PointProvenance expandProvenance(PointId inputPointCount,
-  const std::vector<EdgeKey>& newPointParents)
+PointProvenance expandProvenance(
+  PointId inputPointCount, const std::vector<EdgeKey>& newPointParents)
 {
   PointProvenance all;
   const PointId total = inputPointCount + static_cast<PointId>(newPointParents.size());
@@ -53,10 +53,8 @@ PointProvenance expandProvenance(PointId inputPointCount,
 } // namespace
 
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
-  const std::vector<double>& coordinates,
-  PointId inputPointCount,
-  const std::vector<EdgeKey>& newPointParents,
-  MergedMesh& merged)
+  const std::vector<double>& coordinates, PointId inputPointCount,
+  const std::vector<EdgeKey>& newPointParents, MergedMesh& merged)
 {
   try
   {
@@ -93,21 +91,17 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
       {
         continue;
       }
-      merged.mesh.coordinates.insert(merged.mesh.coordinates.end(),
-        coordinates.begin() + 3 * p,
+      merged.mesh.coordinates.insert(merged.mesh.coordinates.end(), coordinates.begin() + 3 * p,
         coordinates.begin() + 3 * p + 3);
       merged.provenance.sources.insert(merged.provenance.sources.end(),
-        all.sources.begin() + all.offsets[p],
-        all.sources.begin() + all.offsets[p + 1]);
+        all.sources.begin() + all.offsets[p], all.sources.begin() + all.offsets[p + 1]);
       merged.provenance.weights.insert(merged.provenance.weights.end(),
-        all.weights.begin() + all.offsets[p],
-        all.weights.begin() + all.offsets[p + 1]);
+        all.weights.begin() + all.offsets[p], all.weights.begin() + all.offsets[p + 1]);
       merged.provenance.offsets.push_back(
         static_cast<std::int64_t>(merged.provenance.sources.size()));
     }
 
-    const bool hasRegions = std::any_of(partitions.begin(),
-      partitions.end(),
+    const bool hasRegions = std::any_of(partitions.begin(), partitions.end(),
       [](const PartitionMesh& partition) { return !partition.regions.empty(); });
     for (std::size_t part = 0; part < partitions.size(); ++part)
     {

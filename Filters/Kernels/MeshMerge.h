@@ -36,10 +36,8 @@ struct MergedMesh
 // `coordinates` holds all global points; points from `inputPointCount` on were created by
 // splitting the edges in `newPointParents` (one entry per created point, in id order).
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
-  const std::vector<double>& coordinates,
-  PointId inputPointCount,
-  const std::vector<EdgeKey>& newPointParents,
-  MergedMesh& merged);
+  const std::vector<double>& coordinates, PointId inputPointCount,
+  const std::vector<EdgeKey>& newPointParents, MergedMesh& merged);
 
 } // namespace cgmesh
 

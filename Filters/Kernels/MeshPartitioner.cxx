@@ -38,8 +38,7 @@ DualGraph buildDualGraph(const TetMesh& mesh)
       faces.push_back({ corners, t });
     }
   }
-  std::sort(faces.begin(),
-    faces.end(),
+  std::sort(faces.begin(), faces.end(),
     [](const FaceOfTet& a, const FaceOfTet& b)
     { return std::tie(a.corners, a.tet) < std::tie(b.corners, b.tet); });
 
@@ -71,6 +70,86 @@ DualGraph buildDualGraph(const TetMesh& mesh)
   return graph;
 }
 
+namespace
+{
+
+// METIS k-way on a graph in compressed rows; contiguous parts when the graph is connected.
+Status partitionGraphKway(const DualGraph& graph, int parts, std::vector<int>& partOfVertex)
+{
+  const std::int64_t vertexTotal = static_cast<std::int64_t>(graph.offsets.size()) - 1;
+  partOfVertex.assign(vertexTotal, 0);
+  if (parts <= 1 || vertexTotal == 0)
+  {
+    return Status::success();
+  }
+  if (graph.neighbours.size() >= static_cast<std::size_t>(std::numeric_limits<idx_t>::max()))
+  {
+    return Status::failure("mesh too large for METIS' 32-bit indices");
+  }
+  std::vector<idx_t> offsets(graph.offsets.begin(), graph.offsets.end());
+  std::vector<idx_t> neighbours(graph.neighbours.begin(), graph.neighbours.end());
+  std::vector<idx_t> partition(vertexTotal, 0);
+  idx_t vertexCount = static_cast<idx_t>(vertexTotal);
+  idx_t constraintCount = 1;
+  idx_t partCount = parts;
+  idx_t edgeCut = 0;
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_NUMBERING] = 0;
+  options[METIS_OPTION_SEED] = 1;
+  options[METIS_OPTION_CONTIG] = 1;
+  auto run = [&]()
+  {
+    return METIS_PartGraphKway(&vertexCount, &constraintCount, offsets.data(), neighbours.data(),
+      nullptr, nullptr, nullptr, &partCount, nullptr, nullptr, options, &edgeCut, partition.data());
+  };
+  int result = run();
+  if (result != METIS_OK)
+  {
+    // Contiguity cannot be had for a disconnected mesh; partition without it.
+    options[METIS_OPTION_CONTIG] = 0;
+    result = run();
+  }
+  if (result != METIS_OK)
+  {
+    return Status::failure(
+      "METIS failed to partition the mesh (code " + std::to_string(result) + ")");
+  }
+  std::copy(partition.begin(), partition.end(), partOfVertex.begin());
+  return Status::success();
+}
+
+// The subgraph induced by `vertices` (ascending), renumbered 0..n-1 in that order.
+DualGraph inducedSubgraph(
+  const DualGraph& graph, const std::vector<CellId>& vertices, std::vector<CellId>& localIndexOf)
+{
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    localIndexOf[vertices[i]] = static_cast<CellId>(i);
+  }
+  DualGraph sub;
+  sub.offsets.push_back(0);
+  for (CellId v : vertices)
+  {
+    for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
+    {
+      const CellId local = localIndexOf[graph.neighbours[k]];
+      if (local >= 0)
+      {
+        sub.neighbours.push_back(local);
+      }
+    }
+    sub.offsets.push_back(static_cast<std::int64_t>(sub.neighbours.size()));
+  }
+  for (CellId v : vertices)
+  {
+    localIndexOf[v] = -1;
+  }
+  return sub;
+}
+
+} // namespace
+
 Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell)
 {
   const CellId tetCount = mesh.numberOfTets();
@@ -79,70 +158,61 @@ Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<in
   {
     return Status::failure("the number of partitions must be at least 1");
   }
-  if (numberOfPartitions == 1 || tetCount == 0)
-  {
-    return Status::success();
-  }
-  if (numberOfPartitions > tetCount)
+  if (numberOfPartitions > 1 && numberOfPartitions > tetCount)
   {
     return Status::failure("more partitions than tets");
   }
-  const DualGraph graph = buildDualGraph(mesh);
-  if (graph.neighbours.size() >= static_cast<std::size_t>(std::numeric_limits<idx_t>::max()))
+  if (numberOfPartitions == 1)
   {
-    return Status::failure("mesh too large for METIS' 32-bit indices");
+    return Status::success();
+  }
+  return partitionGraphKway(buildDualGraph(mesh), numberOfPartitions, partitionOfCell);
+}
+
+Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
+  std::vector<int>& partitionOfCell, int& numberOfPartitions)
+{
+  if (!mesh.hasRegions())
+  {
+    return Status::failure("partitioning by region needs a region array");
+  }
+  if (partitionsPerRegion < 1)
+  {
+    return Status::failure("the number of partitions per region must be at least 1");
+  }
+  std::vector<int> regionIds = mesh.regions;
+  std::sort(regionIds.begin(), regionIds.end());
+  regionIds.erase(std::unique(regionIds.begin(), regionIds.end()), regionIds.end());
+  std::vector<std::vector<CellId>> tetsOfRegion(regionIds.size());
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    const auto position = std::lower_bound(regionIds.begin(), regionIds.end(), mesh.regions[t]);
+    tetsOfRegion[position - regionIds.begin()].push_back(t);
   }
 
-  std::vector<idx_t> offsets(graph.offsets.begin(), graph.offsets.end());
-  std::vector<idx_t> neighbours(graph.neighbours.begin(), graph.neighbours.end());
-  std::vector<idx_t> partition(tetCount, 0);
-  idx_t vertexCount = static_cast<idx_t>(tetCount);
-  idx_t constraintCount = 1;
-  idx_t partCount = numberOfPartitions;
-  idx_t edgeCut = 0;
-  idx_t options[METIS_NOPTIONS];
-  METIS_SetDefaultOptions(options);
-  options[METIS_OPTION_NUMBERING] = 0;
-  options[METIS_OPTION_SEED] = 1;
-  options[METIS_OPTION_CONTIG] = 1;
-
-  int result = METIS_PartGraphKway(&vertexCount,
-    &constraintCount,
-    offsets.data(),
-    neighbours.data(),
-    nullptr,
-    nullptr,
-    nullptr,
-    &partCount,
-    nullptr,
-    nullptr,
-    options,
-    &edgeCut,
-    partition.data());
-  if (result != METIS_OK)
+  const DualGraph graph = partitionsPerRegion > 1 ? buildDualGraph(mesh) : DualGraph();
+  std::vector<CellId> localIndexOf(mesh.tets.size(), -1);
+  partitionOfCell.assign(mesh.tets.size(), 0);
+  numberOfPartitions = 0;
+  for (const std::vector<CellId>& tets : tetsOfRegion)
   {
-    // Contiguity cannot be had for a disconnected mesh; partition without it.
-    options[METIS_OPTION_CONTIG] = 0;
-    result = METIS_PartGraphKway(&vertexCount,
-      &constraintCount,
-      offsets.data(),
-      neighbours.data(),
-      nullptr,
-      nullptr,
-      nullptr,
-      &partCount,
-      nullptr,
-      nullptr,
-      options,
-      &edgeCut,
-      partition.data());
+    const int parts = static_cast<int>(
+      std::min<std::int64_t>(partitionsPerRegion, static_cast<std::int64_t>(tets.size())));
+    std::vector<int> local(tets.size(), 0);
+    if (parts > 1)
+    {
+      Status status = partitionGraphKway(inducedSubgraph(graph, tets, localIndexOf), parts, local);
+      if (!status.ok())
+      {
+        return status;
+      }
+    }
+    for (std::size_t i = 0; i < tets.size(); ++i)
+    {
+      partitionOfCell[tets[i]] = numberOfPartitions + local[i];
+    }
+    numberOfPartitions += parts;
   }
-  if (result != METIS_OK)
-  {
-    return Status::failure(
-      "METIS failed to partition the mesh (code " + std::to_string(result) + ")");
-  }
-  std::copy(partition.begin(), partition.end(), partitionOfCell.begin());
   return Status::success();
 }
 

@@ -22,9 +22,14 @@ DualGraph buildDualGraph(const TetMesh& mesh);
 
 // Assigns every tet a partition in [0, numberOfPartitions). Deterministic: METIS runs with a
 // fixed seed on a graph built in a fixed order.
-Status partitionMesh(const TetMesh& mesh,
-  int numberOfPartitions,
-  std::vector<int>& partitionOfCell);
+Status partitionMesh(
+  const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell);
+
+// Cuts along material regions: each region (in increasing region id order) becomes
+// `partitionsPerRegion` partitions (fewer when it has fewer tets), split by METIS on the region's
+// own dual graph. Sets `numberOfPartitions` to the total. Requires mesh.regions.
+Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
+  std::vector<int>& partitionOfCell, int& numberOfPartitions);
 
 } // namespace cgmesh
 

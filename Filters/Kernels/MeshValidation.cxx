@@ -25,9 +25,8 @@ constexpr int OutwardFaces[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0,
 
 FaceRecord makeFace(const Tet& tet, int face, CellId tetId)
 {
-  std::array<PointId, 3> corners = {
-    tet[OutwardFaces[face][0]], tet[OutwardFaces[face][1]], tet[OutwardFaces[face][2]]
-  };
+  std::array<PointId, 3> corners = { tet[OutwardFaces[face][0]], tet[OutwardFaces[face][1]],
+    tet[OutwardFaces[face][2]] };
   // Parity of the sorting permutation tells the orientation.
   int swaps = 0;
   for (int i = 0; i < 2; ++i)
@@ -55,8 +54,7 @@ void inspectFaces(const TetMesh& mesh, MeshReport& report)
       faces.push_back(makeFace(mesh.tets[t], f, t));
     }
   }
-  std::sort(faces.begin(),
-    faces.end(),
+  std::sort(faces.begin(), faces.end(),
     [](const FaceRecord& x, const FaceRecord& y)
     { return std::tie(x.sorted, x.tet) < std::tie(y.sorted, y.tet); });
 
@@ -118,9 +116,10 @@ void inspectPoints(const TetMesh& mesh, MeshReport& report)
     order[i] = i;
   }
   auto coordinatesOf = [&mesh](PointId p)
-  { return std::make_tuple(mesh.point(p)[0], mesh.point(p)[1], mesh.point(p)[2]); };
-  std::sort(order.begin(),
-    order.end(),
+  {
+    return std::make_tuple(mesh.point(p)[0], mesh.point(p)[1], mesh.point(p)[2]);
+  };
+  std::sort(order.begin(), order.end(),
     [&](PointId x, PointId y) { return coordinatesOf(x) < coordinatesOf(y); });
   for (size_t i = 1; i < order.size(); ++i)
   {

@@ -28,8 +28,7 @@ public:
   virtual const char* name() const = 0;
   // Fills colorOfPartition with colours 0..C-1 such that adjacent partitions differ. The result
   // must not depend on how parallelFor schedules its work.
-  virtual Status color(const PartitionGraph& graph,
-    const ParallelFor& parallelFor,
+  virtual Status color(const PartitionGraph& graph, const ParallelFor& parallelFor,
     std::vector<int>& colorOfPartition) const = 0;
 };
 

@@ -10,8 +10,7 @@ namespace
 // (point, partition) pairs for every point that lies in more than one partition, beyond the first
 // partition recorded in `firstPartition`.
 std::vector<std::pair<PointId, int>> collectExtraMemberships(const std::vector<Tet>& tets,
-  const std::vector<int>& partitionOfCell,
-  std::vector<int>& firstPartition)
+  const std::vector<int>& partitionOfCell, std::vector<int>& firstPartition)
 {
   std::vector<std::pair<PointId, int>> extra;
   for (std::size_t t = 0; t < tets.size(); ++t)
@@ -37,9 +36,7 @@ std::vector<std::pair<PointId, int>> collectExtraMemberships(const std::vector<T
 } // namespace
 
 PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
-  const std::vector<int>& partitionOfCell,
-  int numberOfPartitions,
-  PointId numberOfPoints)
+  const std::vector<int>& partitionOfCell, int numberOfPartitions, PointId numberOfPoints)
 {
   std::vector<int> firstPartition(numberOfPoints, -1);
   const auto extra = collectExtraMemberships(tets, partitionOfCell, firstPartition);

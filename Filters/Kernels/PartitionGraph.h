@@ -25,9 +25,7 @@ struct PartitionGraph
 };
 
 PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
-  const std::vector<int>& partitionOfCell,
-  int numberOfPartitions,
-  PointId numberOfPoints);
+  const std::vector<int>& partitionOfCell, int numberOfPartitions, PointId numberOfPoints);
 
 // Builds a graph from an explicit undirected edge list (tests and colouring benchmarks).
 PartitionGraph makePartitionGraph(int numberOfPartitions, std::vector<std::pair<int, int>> edges);

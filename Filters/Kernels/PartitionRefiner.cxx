@@ -18,8 +18,7 @@ PointId provisionalId(std::size_t localIndex)
 class SplitSession
 {
 public:
-  SplitSession(const RefinementContext& context,
-    const EdgeMidpointMap& received,
+  SplitSession(const RefinementContext& context, const EdgeMidpointMap& received,
     PartitionRefinement& refinement)
     : Context(context)
     , Received(received)
@@ -129,8 +128,8 @@ int shortestDiagonal(const SplitSession& session, const std::array<PointId, 10>&
 
 } // namespace
 
-std::vector<char> findInterfaceVertices(const std::vector<PartitionMesh>& partitions,
-  PointId numberOfPoints)
+std::vector<char> findInterfaceVertices(
+  const std::vector<PartitionMesh>& partitions, PointId numberOfPoints)
 {
   std::vector<int> firstPartition(numberOfPoints, -1);
   std::vector<char> interfaceVertex(numberOfPoints, 0);
@@ -154,10 +153,8 @@ std::vector<char> findInterfaceVertices(const std::vector<PartitionMesh>& partit
   return interfaceVertex;
 }
 
-Status refinePartition(PartitionMesh& partition,
-  const RefinementContext& context,
-  const EdgeMidpointMap& received,
-  PartitionRefinement& refinement)
+Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
+  const EdgeMidpointMap& received, PartitionRefinement& refinement)
 {
   try
   {
@@ -214,11 +211,13 @@ Status refinePartition(PartitionMesh& partition,
   return Status::success();
 }
 
-void finalizeNewPoints(PartitionMesh& partition,
-  PartitionRefinement& refinement,
-  PointId firstGlobalId)
+void finalizeNewPoints(
+  PartitionMesh& partition, PartitionRefinement& refinement, PointId firstGlobalId)
 {
-  auto globalId = [firstGlobalId](PointId id) { return id >= 0 ? id : firstGlobalId + (-id - 1); };
+  auto globalId = [firstGlobalId](PointId id)
+  {
+    return id >= 0 ? id : firstGlobalId + (-id - 1);
+  };
   for (Tet& tet : partition.tets)
   {
     for (PointId& id : tet)

@@ -44,21 +44,18 @@ struct PartitionRefinement
 
 // Marks the points that lie in tets of two or more partitions: only edges between two such points
 // can be shared, so only their splits go to outboxes.
-std::vector<char> findInterfaceVertices(const std::vector<PartitionMesh>& partitions,
-  PointId numberOfPoints);
+std::vector<char> findInterfaceVertices(
+  const std::vector<PartitionMesh>& partitions, PointId numberOfPoints);
 
 // Refines `partition` in place. The tets' corners are global ids; the result may reference
 // provisional ids (see above).
-Status refinePartition(PartitionMesh& partition,
-  const RefinementContext& context,
-  const EdgeMidpointMap& received,
-  PartitionRefinement& refinement);
+Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
+  const EdgeMidpointMap& received, PartitionRefinement& refinement);
 
 // Rewrites provisional ids of the partition's tets and outbox into global ids starting at
 // `firstGlobalId`.
-void finalizeNewPoints(PartitionMesh& partition,
-  PartitionRefinement& refinement,
-  PointId firstGlobalId);
+void finalizeNewPoints(
+  PartitionMesh& partition, PartitionRefinement& refinement, PointId firstGlobalId);
 
 } // namespace cgmesh
 

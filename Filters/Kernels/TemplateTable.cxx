@@ -71,7 +71,10 @@ bool onReferenceBoundary(const Triangle& t)
       return true;
     }
   }
-  auto onSlanted = [](int v) { return Reference[v][0] + Reference[v][1] + Reference[v][2] == 2; };
+  auto onSlanted = [](int v)
+  {
+    return Reference[v][0] + Reference[v][1] + Reference[v][2] == 2;
+  };
   return onSlanted(t[0]) && onSlanted(t[1]) && onSlanted(t[2]);
 }
 
@@ -81,9 +84,7 @@ LocalTet positivelyOriented(int a, int b, int c, int d)
   {
     std::swap(c, d);
   }
-  return { static_cast<std::uint8_t>(a),
-    static_cast<std::uint8_t>(b),
-    static_cast<std::uint8_t>(c),
+  return { static_cast<std::uint8_t>(a), static_cast<std::uint8_t>(b), static_cast<std::uint8_t>(c),
     static_cast<std::uint8_t>(d) };
 }
 
@@ -209,18 +210,15 @@ private:
       {
         continue;
       }
-      const LocalTet tet = { static_cast<std::uint8_t>(open[0]),
-        static_cast<std::uint8_t>(open[1]),
-        static_cast<std::uint8_t>(open[2]),
-        static_cast<std::uint8_t>(apex) };
+      const LocalTet tet = { static_cast<std::uint8_t>(open[0]), static_cast<std::uint8_t>(open[1]),
+        static_cast<std::uint8_t>(open[2]), static_cast<std::uint8_t>(apex) };
       const int closes = this->closedFaceCount(tet);
       if (closes >= 1)
       {
         candidates.emplace_back(closes, tet);
       }
     }
-    std::stable_sort(candidates.begin(),
-      candidates.end(),
+    std::stable_sort(candidates.begin(), candidates.end(),
       [](const auto& x, const auto& y) { return x.first > y.first; });
     for (const auto& candidate : candidates)
     {
@@ -352,12 +350,17 @@ int localEdgeIndex(int a, int b)
   return -1;
 }
 
-std::vector<std::array<int, 3>> triangulateFace(const std::array<int, 3>& face,
-  int splitMask,
-  const std::array<int, 4>& cornerRanks)
+std::vector<std::array<int, 3>> triangulateFace(
+  const std::array<int, 3>& face, int splitMask, const std::array<int, 4>& cornerRanks)
 {
-  auto midpoint = [](int a, int b) { return 4 + localEdgeIndex(a, b); };
-  auto isSplit = [splitMask](int a, int b) { return (splitMask >> localEdgeIndex(a, b)) & 1; };
+  auto midpoint = [](int a, int b)
+  {
+    return 4 + localEdgeIndex(a, b);
+  };
+  auto isSplit = [splitMask](int a, int b)
+  {
+    return (splitMask >> localEdgeIndex(a, b)) & 1;
+  };
   const int a = face[0], b = face[1], c = face[2];
   const int splitCount = isSplit(a, b) + isSplit(b, c) + isSplit(a, c);
   if (splitCount == 0)
@@ -435,8 +438,8 @@ TemplateTable::TemplateTable()
   }
 }
 
-const std::vector<LocalTet>& TemplateTable::partialSplit(int splitMask,
-  const std::array<int, 4>& cornerRanks) const
+const std::vector<LocalTet>& TemplateTable::partialSplit(
+  int splitMask, const std::array<int, 4>& cornerRanks) const
 {
   return this->Partial[splitMask * 256 + rankCode(cornerRanks)];
 }

@@ -32,8 +32,8 @@ public:
 
   // The child tets for one split pattern. `splitMask` has bit e set when edge e is split (1..62);
   // `cornerRanks[i]` is corner i's position (0..3) in the global vertex order.
-  const std::vector<LocalTet>& partialSplit(int splitMask,
-    const std::array<int, 4>& cornerRanks) const;
+  const std::vector<LocalTet>& partialSplit(
+    int splitMask, const std::array<int, 4>& cornerRanks) const;
 
   // The eight child tets when all six edges are split; `diagonal` 0, 1, 2 cuts the inner
   // octahedron along the midpoints of edges (0,5), (1,4) or (2,3) respectively.
@@ -48,9 +48,8 @@ private:
 
 // Triangulation of one tet face under the rules above, in local vertex numbers; exposed so that
 // tests can check both sides of a face agree. `face` lists three corners.
-std::vector<std::array<int, 3>> triangulateFace(const std::array<int, 3>& face,
-  int splitMask,
-  const std::array<int, 4>& cornerRanks);
+std::vector<std::array<int, 3>> triangulateFace(
+  const std::array<int, 3>& face, int splitMask, const std::array<int, 4>& cornerRanks);
 
 // Local index (0..5) of the edge joining corners a and b.
 int localEdgeIndex(int a, int b);

@@ -28,9 +28,9 @@ TetMesh cubeWithRegions(int n)
   return mesh;
 }
 
-AdaptationResult refine(const TetMesh& input, int partitions, int threads, int iterations)
+AdaptationResult refine(const TetMesh& input, int partitions, int threads, int iterations,
+  AdaptationOptions options = AdaptationOptions())
 {
-  AdaptationOptions options;
   options.numberOfPartitions = partitions;
   options.numberOfThreads = threads;
   options.numberOfIterations = iterations;
@@ -48,8 +48,7 @@ AdaptationResult refine(const TetMesh& input, int partitions, int threads, int i
 bool identical(const AdaptationResult& a, const AdaptationResult& b)
 {
   return a.mesh.coordinates.size() == b.mesh.coordinates.size() &&
-    std::memcmp(a.mesh.coordinates.data(),
-      b.mesh.coordinates.data(),
+    std::memcmp(a.mesh.coordinates.data(), b.mesh.coordinates.data(),
       a.mesh.coordinates.size() * sizeof(double)) == 0 &&
     a.mesh.tets == b.mesh.tets && a.mesh.regions == b.mesh.regions &&
     a.parentCell == b.parentCell && a.colorOfCell == b.colorOfCell &&
@@ -105,6 +104,58 @@ void test_cube_refinement_at_partition_counts()
   }
 }
 
+void test_every_coloring_gives_identical_output_across_threads()
+{
+  const TetMesh input = cubeWithRegions(6);
+  for (const char* coloring : { "greedy", "greedy-lu", "iterative", "recoloring" })
+  {
+    AdaptationOptions options;
+    options.coloring = coloring;
+    const AdaptationResult serial = refine(input, 64, 1, 1, options);
+    checkRefinedCube(input, serial, 1);
+    CHECK(identical(serial, refine(input, 64, 2, 1, options)));
+    CHECK_EQUAL(serial.partitionsPerColor.size(), static_cast<std::size_t>(serial.numberOfColors));
+    std::int64_t cells = 0;
+    for (std::int64_t count : serial.cellsPerColor)
+    {
+      cells += count;
+    }
+    CHECK_EQUAL(cells, serial.mesh.numberOfTets());
+    CHECK(serial.colorBalance >= 1.0);
+  }
+}
+
+void test_partition_by_region()
+{
+  const TetMesh input = cubeWithRegions(6);
+  for (int perRegion : { 1, 5 })
+  {
+    AdaptationOptions options;
+    options.partitionByRegion = true;
+    options.partitionsPerRegion = perRegion;
+    const AdaptationResult result = refine(input, 0, 2, 1, options);
+    checkRefinedCube(input, result, 1);
+    CHECK_EQUAL(result.numberOfPartitions, 2 * perRegion);
+    // Every partition lies inside one region.
+    std::vector<int> regionOfPartition(result.numberOfPartitions, 0);
+    for (std::size_t t = 0; t < result.partitionOfCell.size(); ++t)
+    {
+      regionOfPartition[result.partitionOfCell[t]] = result.mesh.regions[t];
+    }
+    for (std::size_t t = 0; t < result.partitionOfCell.size(); ++t)
+    {
+      CHECK_EQUAL(regionOfPartition[result.partitionOfCell[t]], result.mesh.regions[t]);
+    }
+    CHECK(identical(result, refine(input, 0, 1, 1, options)));
+  }
+  TetMesh noRegions;
+  CHECK(generateKuhnCube(2, noRegions).ok());
+  AdaptationOptions options;
+  options.partitionByRegion = true;
+  AdaptationResult result;
+  CHECK(!adaptMesh(noRegions, options, result).ok());
+}
+
 void test_partition_count_clamped_to_tets()
 {
   TetMesh input;
@@ -137,7 +188,10 @@ void test_abort_between_colours()
   AdaptationOptions options;
   options.numberOfPartitions = 16;
   int polls = 0;
-  options.abortRequested = [&polls]() { return ++polls > 1; };
+  options.abortRequested = [&polls]()
+  {
+    return ++polls > 1;
+  };
   AdaptationResult result;
   CHECK(adaptMesh(input, options, result).ok());
   CHECK(result.aborted);
@@ -149,6 +203,8 @@ void test_abort_between_colours()
 int main()
 {
   test_cube_refinement_at_partition_counts();
+  test_every_coloring_gives_identical_output_across_threads();
+  test_partition_by_region();
   test_partition_count_clamped_to_tets();
   test_bad_options_are_refused();
   test_abort_between_colours();

@@ -45,8 +45,7 @@ void processInOrder(ManualRun& run, const std::vector<int>& order, double thresh
     auto& refinement = run.refinements[p];
     run.coordinates.insert(
       run.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
-    run.newPointParents.insert(run.newPointParents.end(),
-      refinement.newPointParents.begin(),
+    run.newPointParents.insert(run.newPointParents.end(), refinement.newPointParents.begin(),
       refinement.newPointParents.end());
     finalizeNewPoints(run.partitions[p], refinement, first);
     processed.push_back(&refinement.outbox);

@@ -15,15 +15,11 @@ namespace
 {
 
 // An irregular, positively oriented tet.
-const double Corners[4][3] = { { 0.1, 0.0, 0.05 },
-  { 1.3, 0.2, 0.0 },
-  { 0.3, 1.1, 0.1 },
+const double Corners[4][3] = { { 0.1, 0.0, 0.05 }, { 1.3, 0.2, 0.0 }, { 0.3, 1.1, 0.1 },
   { 0.2, 0.4, 0.9 } };
 
-std::vector<LocalTet> templateFor(const TemplateTable& table,
-  int mask,
-  const std::array<int, 4>& ranks,
-  int diagonal)
+std::vector<LocalTet> templateFor(
+  const TemplateTable& table, int mask, const std::array<int, 4>& ranks, int diagonal)
 {
   if (mask == 0)
   {
@@ -53,10 +49,8 @@ TetMesh childMesh(const std::vector<LocalTet>& children)
   return mesh;
 }
 
-void checkOneCase(const TemplateTable& table,
-  int mask,
-  const std::array<int, 4>& ranks,
-  int diagonal)
+void checkOneCase(
+  const TemplateTable& table, int mask, const std::array<int, 4>& ranks, int diagonal)
 {
   const TetMesh parent = childMesh({ LocalTet{ 0, 1, 2, 3 } });
   const MeshReport parentReport = inspectMesh(parent);
@@ -71,9 +65,8 @@ void checkOneCase(const TemplateTable& table,
 
   // The children's boundary is exactly the face rule's triangulation of the parent's faces.
   std::set<std::array<int, 3>> expected;
-  const std::array<std::array<int, 3>, 4> faces = {
-    { { 1, 2, 3 }, { 0, 2, 3 }, { 0, 1, 3 }, { 0, 1, 2 } }
-  };
+  const std::array<std::array<int, 3>, 4> faces = { { { 1, 2, 3 }, { 0, 2, 3 }, { 0, 1, 3 },
+    { 0, 1, 2 } } };
   for (const auto& face : faces)
   {
     for (auto triangle : triangulateFace(face, mask, ranks))
@@ -149,9 +142,7 @@ void test_every_template_case()
 using VertexKey = std::pair<int, int>;
 
 std::set<std::array<VertexKey, 3>> facePieces(const TemplateTable& table,
-  const std::array<int, 4>& globalIds,
-  int mask,
-  const std::set<int>& faceIds)
+  const std::array<int, 4>& globalIds, int mask, const std::set<int>& faceIds)
 {
   std::array<int, 4> ranks;
   for (int i = 0; i < 4; ++i)
@@ -170,7 +161,9 @@ std::set<std::array<VertexKey, 3>> facePieces(const TemplateTable& table,
     return { std::min(a, b), std::max(a, b) };
   };
   auto onFace = [&](const VertexKey& key)
-  { return faceIds.count(key.first) && faceIds.count(key.second); };
+  {
+    return faceIds.count(key.first) && faceIds.count(key.second);
+  };
   std::set<std::array<VertexKey, 3>> pieces;
   for (const LocalTet& child : templateFor(table, mask, ranks, 0))
   {

@@ -1,0 +1,140 @@
+// Every colouring is proper on random, complete, edgeless and real partition graphs; the parallel
+// ones give the same colours for any thread count and schedule; the balanced ones are better
+// balanced than first-fit greedy.
+#include "ColoringSupport.h"
+#include "CubeGenerator.h"
+#include "MeshPartitioner.h"
+#include "ParallelFor.h"
+#include "PartitionColoring.h"
+#include "TestHarness.h"
+
+#include <algorithm>
+#include <random>
+
+using namespace cgmesh;
+
+namespace
+{
+
+ParallelFor threadedExecutor(int threads)
+{
+  return [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
+  {
+    CHECK(runParallel(threads, count, body).ok());
+  };
+}
+
+// Runs the tasks serially from last to first: a schedule no thread team would pick by default.
+ParallelFor reversedExecutor()
+{
+  return [](std::int64_t count, const std::function<void(std::int64_t)>& body)
+  {
+    for (std::int64_t i = count - 1; i >= 0; --i)
+    {
+      body(i);
+    }
+  };
+}
+
+PartitionGraph randomGraph(int vertices, int edges, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::vector<std::pair<int, int>> list;
+  for (int e = 0; e < edges; ++e)
+  {
+    list.emplace_back(static_cast<int>(random() % vertices), static_cast<int>(random() % vertices));
+  }
+  return makePartitionGraph(vertices, list);
+}
+
+PartitionGraph completeGraph(int vertices)
+{
+  std::vector<std::pair<int, int>> list;
+  for (int a = 0; a < vertices; ++a)
+  {
+    for (int b = a + 1; b < vertices; ++b)
+    {
+      list.emplace_back(a, b);
+    }
+  }
+  return makePartitionGraph(vertices, list);
+}
+
+PartitionGraph meshPartitionGraph(int cubeCells, int partitions)
+{
+  TetMesh mesh;
+  CHECK(generateKuhnCube(cubeCells, mesh).ok());
+  std::vector<int> partitionOfCell;
+  CHECK(partitionMesh(mesh, partitions, partitionOfCell).ok());
+  return buildPartitionGraph(mesh.tets, partitionOfCell, partitions, mesh.numberOfPoints());
+}
+
+double balance(const std::vector<int>& colors)
+{
+  const int count = countColors(colors);
+  const auto sizes = colorSizes(colors, count);
+  const double mean = static_cast<double>(colors.size()) / count;
+  return static_cast<double>(*std::max_element(sizes.begin(), sizes.end())) / mean;
+}
+
+std::vector<int> colorWith(
+  const std::string& name, const PartitionGraph& graph, const ParallelFor& executor)
+{
+  std::vector<int> colors;
+  const auto coloring = makeColoring(name);
+  CHECK(coloring != nullptr);
+  CHECK(coloring->color(graph, executor, colors).ok());
+  CHECK(isProperColoring(graph, colors));
+  return colors;
+}
+
+void test_all_colorings_are_proper_and_deterministic()
+{
+  const std::vector<PartitionGraph> graphs = { randomGraph(500, 3000, 1),
+    randomGraph(2000, 40000, 2), completeGraph(40), meshPartitionGraph(12, 128),
+    makePartitionGraph(1, {}), makePartitionGraph(50, {}) };
+  CHECK_EQUAL(coloringNames().size(), 4u);
+  for (const std::string& name : coloringNames())
+  {
+    for (const PartitionGraph& graph : graphs)
+    {
+      const std::vector<int> reference = colorWith(name, graph, threadedExecutor(1));
+      CHECK(colorWith(name, graph, threadedExecutor(2)) == reference);
+      CHECK(colorWith(name, graph, threadedExecutor(4)) == reference);
+      CHECK(colorWith(name, graph, reversedExecutor()) == reference);
+    }
+  }
+}
+
+void test_edge_cases()
+{
+  for (const std::string& name : coloringNames())
+  {
+    CHECK_EQUAL(countColors(colorWith(name, makePartitionGraph(1, {}), threadedExecutor(2))), 1);
+    CHECK_EQUAL(countColors(colorWith(name, makePartitionGraph(50, {}), threadedExecutor(2))), 1);
+    CHECK_EQUAL(countColors(colorWith(name, completeGraph(40), threadedExecutor(2))), 40);
+  }
+  CHECK(makeColoring("no-such-colouring") == nullptr);
+}
+
+void test_balanced_colorings_beat_greedy()
+{
+  const PartitionGraph graph = meshPartitionGraph(20, 512);
+  const double greedy = balance(colorWith("greedy", graph, threadedExecutor(2)));
+  const double leastUsed = balance(colorWith("greedy-lu", graph, threadedExecutor(2)));
+  const double recolored = balance(colorWith("recoloring", graph, threadedExecutor(2)));
+  std::cout << "balance (largest colour / mean): greedy " << greedy << ", greedy-lu " << leastUsed
+            << ", recoloring " << recolored << "\n";
+  CHECK(leastUsed < 0.8 * greedy);
+  CHECK(recolored < 0.8 * greedy);
+}
+
+} // namespace
+
+int main()
+{
+  test_all_colorings_are_proper_and_deterministic();
+  test_edge_cases();
+  test_balanced_colorings_beat_greedy();
+  return cgmesh_test::finish("TestColorings");
+}
