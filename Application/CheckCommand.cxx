@@ -1,0 +1,100 @@
+// cgmesh check IN [--region-array NAME]: validity figures of a tetrahedral mesh.
+#include "Commands.h"
+
+#include "CommandLine.h"
+#include "MeshFiles.h"
+#include "MeshValidation.h"
+#include "cgmeshVTKConversion.h"
+
+#include "vtkNew.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <iomanip>
+#include <iostream>
+
+namespace cgmesh
+{
+
+namespace
+{
+
+void printCheckUsage()
+{
+  std::cout
+    << "usage: cgmesh check IN [--region-array NAME]\n"
+       "\n"
+       "Reports counts, inverted/degenerate tetrahedra, over-shared and misoriented faces,\n"
+       "unused and duplicate points, volume, boundary area and (with a region array) the\n"
+       "volume of each region. Exits with status 1 when the mesh is not valid.\n";
+}
+
+void printReport(const MeshReport& report, std::ostream& stream)
+{
+  stream << std::left << std::setprecision(12);
+  const auto line = [&stream](const char* label) -> std::ostream&
+  { return stream << std::setw(28) << label; };
+  line("points") << report.numberOfPoints << "\n";
+  line("tetrahedra") << report.numberOfTets << "\n";
+  line("boundary faces") << report.boundaryFaces << "\n";
+  line("interior faces") << report.interiorFaces << "\n";
+  line("faces in 3+ tetrahedra") << report.overSharedFaces << "\n";
+  line("misoriented face pairs") << report.misorientedFacePairs << "\n";
+  line("inverted tetrahedra") << report.invertedTets << "\n";
+  line("degenerate tetrahedra") << report.degenerateTets << "\n";
+  line("repeated-corner tetrahedra") << report.repeatedCornerTets << "\n";
+  line("unused points") << report.unusedPoints << "\n";
+  line("duplicate points") << report.duplicatePoints << "\n";
+  line("volume") << report.volume << "\n";
+  line("boundary area") << report.boundaryArea << "\n";
+  if (!report.regionVolumes.empty())
+  {
+    line("region interface faces") << report.regionInterfaceFaces << "\n";
+    line("region interface area") << report.regionInterfaceArea << "\n";
+    for (const auto& region : report.regionVolumes)
+    {
+      stream << "region " << std::setw(21) << region.first << region.second << "\n";
+    }
+  }
+  stream << std::right;
+}
+
+} // namespace
+
+int runCheckCommand(const std::vector<std::string>& commandArguments)
+{
+  if (wantsHelp(commandArguments))
+  {
+    printCheckUsage();
+    return 0;
+  }
+  CheckArguments arguments;
+  Status status = parseCheckArguments(commandArguments, arguments);
+  if (!status.ok())
+  {
+    reportError(status.message());
+    return UsageErrorExitStatus;
+  }
+  vtkNew<vtkUnstructuredGrid> grid;
+  status = readUnstructuredGrid(arguments.inputFile, grid);
+  if (!status.ok())
+    return reportError(status.message());
+  const vtkIdType nonTetrahedra = countNonTetrahedra(grid);
+  if (nonTetrahedra > 0)
+    return reportError(std::to_string(nonTetrahedra) + " cells are not linear tetrahedra");
+  TetMesh mesh;
+  status = convertToTetMesh(grid, arguments.regionArrayName, mesh);
+  if (!status.ok())
+    return reportError(status.message());
+
+  const MeshReport report = inspectMesh(mesh);
+  printReport(report, std::cout);
+  if (!report.isValid())
+  {
+    std::cout << "INVALID:\n" << report.describeProblems();
+    return FailureExitStatus;
+  }
+  std::cout << "valid\n";
+  return 0;
+}
+
+} // namespace cgmesh

@@ -1,0 +1,199 @@
+#include "CommandLine.h"
+
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+namespace cgmesh
+{
+
+bool wantsHelp(const std::vector<std::string>& arguments)
+{
+  for (const std::string& argument : arguments)
+  {
+    if (argument == "-h" || argument == "--help")
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+Status parseInt(const std::string& text,
+  const std::string& what,
+  int minimum,
+  int maximum,
+  int& value)
+{
+  errno = 0;
+  char* end = nullptr;
+  const long parsed = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno == ERANGE || parsed < minimum || parsed > maximum)
+  {
+    return Status::failure(what + " must be an integer in [" + std::to_string(minimum) + ", " +
+      std::to_string(maximum) + "], got '" + text + "'");
+  }
+  value = static_cast<int>(parsed);
+  return Status::success();
+}
+
+Status parseDouble(const std::string& text, const std::string& what, double minimum, double& value)
+{
+  errno = 0;
+  char* end = nullptr;
+  const double parsed = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(parsed) || parsed < minimum)
+  {
+    return Status::failure(
+      what + " must be a number >= " + std::to_string(minimum) + ", got '" + text + "'");
+  }
+  value = parsed;
+  return Status::success();
+}
+
+namespace
+{
+
+// Splits arguments into positionals and "--name value" / "--name=value" options.
+Status splitArguments(const std::vector<std::string>& arguments,
+  std::vector<std::string>& positionals,
+  std::map<std::string, std::string>& options)
+{
+  for (size_t index = 0; index < arguments.size(); ++index)
+  {
+    const std::string& argument = arguments[index];
+    if (argument.rfind("--", 0) != 0)
+    {
+      positionals.push_back(argument);
+      continue;
+    }
+    std::string name = argument;
+    std::string value;
+    const size_t equals = argument.find('=');
+    if (equals != std::string::npos)
+    {
+      name = argument.substr(0, equals);
+      value = argument.substr(equals + 1);
+    }
+    else if (index + 1 < arguments.size())
+    {
+      value = arguments[++index];
+    }
+    else
+    {
+      return Status::failure("option " + name + " needs a value");
+    }
+    if (options.count(name))
+    {
+      return Status::failure("option " + name + " given twice");
+    }
+    options[name] = value;
+  }
+  return Status::success();
+}
+
+Status checkPositionalCount(const std::vector<std::string>& positionals,
+  size_t expected,
+  const std::string& usage)
+{
+  if (positionals.size() != expected)
+  {
+    return Status::failure("expected " + usage + " (see --help)");
+  }
+  return Status::success();
+}
+
+Status applyRefineOption(const std::string& name, const std::string& value, RefineArguments& parsed)
+{
+  if (name == "--partitions")
+    return parseInt(value, name, 1, INT_MAX, parsed.numberOfPartitions);
+  if (name == "--iterations")
+    return parseInt(value, name, 1, INT_MAX, parsed.numberOfIterations);
+  if (name == "--max-edge-length")
+    return parseDouble(value, name, 0.0, parsed.maximumEdgeLength);
+  if (name == "--edge-length-factor")
+    return parseDouble(value, name, 0.0, parsed.edgeLengthFactor);
+  if (name == "--threads")
+    return parseInt(value, name, 0, INT_MAX, parsed.numberOfThreads);
+  if (name == "--region-array")
+  {
+    parsed.regionArrayName = value;
+    return Status::success();
+  }
+  if (name == "--stats")
+  {
+    parsed.statsFile = value;
+    return Status::success();
+  }
+  return Status::failure("unknown option " + name + " (see --help)");
+}
+
+} // namespace
+
+Status parseRefineArguments(const std::vector<std::string>& arguments, RefineArguments& parsed)
+{
+  std::vector<std::string> positionals;
+  std::map<std::string, std::string> options;
+  Status status = splitArguments(arguments, positionals, options);
+  if (!status.ok())
+    return status;
+  status = checkPositionalCount(positionals, 2, "IN and OUT");
+  if (!status.ok())
+    return status;
+  parsed.inputFile = positionals[0];
+  parsed.outputFile = positionals[1];
+  if (options.count("--max-edge-length") && options.count("--edge-length-factor"))
+  {
+    return Status::failure("give either --max-edge-length or --edge-length-factor, not both");
+  }
+  for (const auto& option : options)
+  {
+    status = applyRefineOption(option.first, option.second, parsed);
+    if (!status.ok())
+      return status;
+  }
+  return Status::success();
+}
+
+Status parseGenerateArguments(const std::vector<std::string>& arguments, GenerateArguments& parsed)
+{
+  std::vector<std::string> positionals;
+  std::map<std::string, std::string> options;
+  Status status = splitArguments(arguments, positionals, options);
+  if (!status.ok())
+    return status;
+  if (!options.empty())
+    return Status::failure("unknown option " + options.begin()->first + " (see --help)");
+  status = checkPositionalCount(positionals, 3, "cube N OUT.vtu");
+  if (!status.ok())
+    return status;
+  if (positionals[0] != "cube")
+    return Status::failure("unknown shape '" + positionals[0] + "' (only 'cube' is available)");
+  parsed.shape = positionals[0];
+  parsed.outputFile = positionals[2];
+  return parseInt(positionals[1], "N", 1, 1000, parsed.cellsPerSide);
+}
+
+Status parseCheckArguments(const std::vector<std::string>& arguments, CheckArguments& parsed)
+{
+  std::vector<std::string> positionals;
+  std::map<std::string, std::string> options;
+  Status status = splitArguments(arguments, positionals, options);
+  if (!status.ok())
+    return status;
+  status = checkPositionalCount(positionals, 1, "IN");
+  if (!status.ok())
+    return status;
+  parsed.inputFile = positionals[0];
+  for (const auto& option : options)
+  {
+    if (option.first != "--region-array")
+      return Status::failure("unknown option " + option.first + " (see --help)");
+    parsed.regionArrayName = option.second;
+  }
+  return Status::success();
+}
+
+} // namespace cgmesh

@@ -1,0 +1,163 @@
+// cgmesh refine IN OUT [options]: runs vtkCoarseGrainedMeshAdaptation on a file.
+#include "Commands.h"
+
+#include "CommandLine.h"
+#include "MeshFiles.h"
+#include "RefineReport.h"
+#include "VTKMessages.h"
+
+#include "vtkCoarseGrainedMeshAdaptation.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace cgmesh
+{
+
+namespace
+{
+
+void printRefineUsage()
+{
+  std::cout << "usage: cgmesh refine IN OUT [--partitions N] [--iterations K]\n"
+               "                     [--max-edge-length L | --edge-length-factor F] [--threads T]\n"
+               "                     [--region-array NAME] [--stats FILE.json]\n"
+               "\n"
+               "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
+               "\n"
+               "  --partitions N          number of METIS partitions (default 1024)\n"
+               "  --iterations K          refinement passes (default 1)\n"
+               "  --max-edge-length L     split edges longer than L (absolute length)\n"
+               "  --edge-length-factor F  split edges longer than F x mean input edge length "
+               "(default 0.5)\n"
+               "  --threads T             OpenMP threads, 0 = all cores (default 0)\n"
+               "  --region-array NAME     cell array with material/region ids\n"
+               "  --stats FILE.json       write counts and phase timings as JSON\n";
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void configureFilter(const RefineArguments& arguments, vtkCoarseGrainedMeshAdaptation* filter)
+{
+  filter->SetNumberOfPartitions(arguments.numberOfPartitions);
+  filter->SetNumberOfIterations(arguments.numberOfIterations);
+  filter->SetMaximumEdgeLength(arguments.maximumEdgeLength);
+  filter->SetEdgeLengthFactor(arguments.edgeLengthFactor);
+  filter->SetNumberOfThreads(arguments.numberOfThreads);
+  filter->SetRegionArrayName(
+    arguments.regionArrayName.empty() ? nullptr : arguments.regionArrayName.c_str());
+}
+
+// Runs the filter on `input`; on success `output` holds the refined grid.
+Status refineGrid(
+  const RefineArguments& arguments, vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
+{
+  vtkNew<vtkCoarseGrainedMeshAdaptation> filter;
+  vtkNew<VTKMessageCollector> messages;
+  messages->watch(filter);
+  configureFilter(arguments, filter);
+  filter->SetInputData(input);
+  filter->Update();
+  for (const std::string& warning : messages->warnings())
+  {
+    std::cerr << "cgmesh: warning: " << warning << "\n";
+  }
+  if (!messages->errors().empty())
+  {
+    return Status::failure(messages->errors().front());
+  }
+  output->ShallowCopy(filter->GetOutput());
+  if (output->GetNumberOfCells() == 0 && input->GetNumberOfCells() > 0)
+  {
+    return Status::failure("the refinement produced no cells");
+  }
+  return Status::success();
+}
+
+// Timings and the thread count differ from run to run; they go to the table and the stats file,
+// not into OUT, so that OUT is byte-identical for every thread count.
+void removeRunDependentFieldData(vtkUnstructuredGrid* grid)
+{
+  vtkFieldData* fieldData = grid->GetFieldData();
+  for (int index = fieldData->GetNumberOfArrays() - 1; index >= 0; --index)
+  {
+    const std::string name = fieldData->GetArrayName(index) ? fieldData->GetArrayName(index) : "";
+    const std::string suffix = "Seconds";
+    const bool isTiming = name.size() > suffix.size() &&
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+    if (isTiming || name == "NumberOfThreads")
+      fieldData->RemoveArray(index);
+  }
+}
+
+} // namespace
+
+int runRefineCommand(const std::vector<std::string>& commandArguments)
+{
+  if (wantsHelp(commandArguments))
+  {
+    printRefineUsage();
+    return 0;
+  }
+  RefineArguments arguments;
+  Status status = parseRefineArguments(commandArguments, arguments);
+  if (!status.ok())
+  {
+    reportError(status.message());
+    return UsageErrorExitStatus;
+  }
+
+  status = checkOutputFileName(arguments.outputFile);
+  if (!status.ok())
+    return reportError(status.message());
+
+  auto start = std::chrono::steady_clock::now();
+  vtkNew<vtkUnstructuredGrid> input;
+  status = readUnstructuredGrid(arguments.inputFile, input);
+  if (!status.ok())
+    return reportError(status.message());
+  const double readSeconds = secondsSince(start);
+
+  vtkNew<vtkUnstructuredGrid> output;
+  status = refineGrid(arguments, input, output);
+  if (!status.ok())
+    return reportError(status.message());
+
+  RefineStatistics statistics;
+  statistics.inputFile = arguments.inputFile;
+  statistics.outputFile = arguments.outputFile;
+  statistics.inputPoints = input->GetNumberOfPoints();
+  statistics.inputCells = input->GetNumberOfCells();
+  statistics.numberOfIterations = arguments.numberOfIterations;
+  collectFilterStatistics(output, statistics);
+  removeRunDependentFieldData(output);
+
+  start = std::chrono::steady_clock::now();
+  status = writeUnstructuredGrid(output, arguments.outputFile);
+  if (!status.ok())
+    return reportError(status.message());
+  const double writeSeconds = secondsSince(start);
+
+  statistics.seconds.emplace_back("read", readSeconds);
+  statistics.seconds.emplace_back("write", writeSeconds);
+  printStatisticsTable(statistics, std::cout);
+  if (!arguments.statsFile.empty())
+  {
+    status = writeStatisticsJson(statistics, arguments.statsFile);
+    if (!status.ok())
+    {
+      std::remove(arguments.outputFile.c_str()); // all-or-nothing: no output without its stats
+      return reportError(status.message());
+    }
+  }
+  return 0;
+}
+
+} // namespace cgmesh

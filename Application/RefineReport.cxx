@@ -1,0 +1,123 @@
+#include "RefineReport.h"
+
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace cgmesh
+{
+
+namespace
+{
+
+// JSON key of each phase and the field-data array the filter stores it in.
+const std::pair<const char*, const char*> FilterPhases[] = { { "partition", "PartitionSeconds" },
+  { "graph", "GraphSeconds" },
+  { "color", "ColorSeconds" },
+  { "heal", "HealSeconds" },
+  { "adapt", "AdaptSeconds" },
+  { "post", "PostSeconds" },
+  { "merge", "MergeSeconds" },
+  { "quality", "QualitySeconds" },
+  { "total", "TotalSeconds" } };
+
+double fieldValue(vtkFieldData* fieldData, const char* name)
+{
+  vtkDataArray* array = fieldData->GetArray(name);
+  return (array && array->GetNumberOfTuples() > 0) ? array->GetComponent(0, 0) : 0.0;
+}
+
+std::string jsonString(const std::string& text)
+{
+  std::ostringstream escaped;
+  escaped << '"';
+  for (const char character : text)
+  {
+    if (character == '"' || character == '\\')
+      escaped << '\\' << character;
+    else if (static_cast<unsigned char>(character) < 0x20)
+      escaped << "\\u" << std::hex << std::setw(4) << std::setfill('0')
+              << static_cast<int>(character) << std::dec;
+    else
+      escaped << character;
+  }
+  escaped << '"';
+  return escaped.str();
+}
+
+} // namespace
+
+void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& statistics)
+{
+  vtkFieldData* fieldData = output->GetFieldData();
+  statistics.outputPoints = output->GetNumberOfPoints();
+  statistics.outputCells = output->GetNumberOfCells();
+  statistics.numberOfColors = static_cast<int>(fieldValue(fieldData, "NumberOfColors"));
+  statistics.numberOfPartitions = static_cast<int>(fieldValue(fieldData, "NumberOfPartitions"));
+  statistics.numberOfThreads = static_cast<int>(fieldValue(fieldData, "NumberOfThreads"));
+  statistics.edgeLengthThreshold = fieldValue(fieldData, "EdgeLengthThreshold");
+  for (const auto& phase : FilterPhases)
+  {
+    statistics.seconds.emplace_back(phase.first, fieldValue(fieldData, phase.second));
+  }
+}
+
+void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stream)
+{
+  stream << std::left << std::setw(24) << "input points" << statistics.inputPoints << "\n"
+         << std::setw(24) << "input cells" << statistics.inputCells << "\n"
+         << std::setw(24) << "output points" << statistics.outputPoints << "\n"
+         << std::setw(24) << "output cells" << statistics.outputCells << "\n"
+         << std::setw(24) << "partitions" << statistics.numberOfPartitions << "\n"
+         << std::setw(24) << "colors" << statistics.numberOfColors << "\n"
+         << std::setw(24) << "threads" << statistics.numberOfThreads << "\n"
+         << std::setw(24) << "iterations" << statistics.numberOfIterations << "\n"
+         << std::setw(24) << "edge length threshold" << std::setprecision(6)
+         << statistics.edgeLengthThreshold << "\n"
+         << "\n"
+         << std::setw(24) << "phase"
+         << "seconds\n";
+  for (const auto& phase : statistics.seconds)
+  {
+    stream << std::setw(24) << phase.first << std::fixed << std::setprecision(4) << phase.second
+           << std::defaultfloat << "\n";
+  }
+  stream << std::right;
+}
+
+Status writeStatisticsJson(const RefineStatistics& statistics, const std::string& fileName)
+{
+  std::ofstream file(fileName);
+  if (!file)
+    return Status::failure("cannot write statistics file '" + fileName + "'");
+  file << std::setprecision(17);
+  file << "{\n"
+       << "  \"input\": {\"file\": " << jsonString(statistics.inputFile)
+       << ", \"points\": " << statistics.inputPoints << ", \"cells\": " << statistics.inputCells
+       << "},\n"
+       << "  \"output\": {\"file\": " << jsonString(statistics.outputFile)
+       << ", \"points\": " << statistics.outputPoints << ", \"cells\": " << statistics.outputCells
+       << "},\n"
+       << "  \"colors\": " << statistics.numberOfColors << ",\n"
+       << "  \"partitions\": " << statistics.numberOfPartitions << ",\n"
+       << "  \"threads\": " << statistics.numberOfThreads << ",\n"
+       << "  \"iterations\": " << statistics.numberOfIterations << ",\n"
+       << "  \"edgeLengthThreshold\": " << statistics.edgeLengthThreshold << ",\n"
+       << "  \"seconds\": {";
+  for (size_t index = 0; index < statistics.seconds.size(); ++index)
+  {
+    file << (index ? ", " : "") << jsonString(statistics.seconds[index].first) << ": "
+         << statistics.seconds[index].second;
+  }
+  file << "}\n}\n";
+  file.close();
+  if (!file)
+    return Status::failure("cannot write statistics file '" + fileName + "'");
+  return Status::success();
+}
+
+} // namespace cgmesh

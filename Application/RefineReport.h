@@ -1,0 +1,45 @@
+// Statistics of one `cgmesh refine` run: the table printed on stdout and the --stats JSON file.
+#ifndef cgmesh_RefineReport_h
+#define cgmesh_RefineReport_h
+
+#include "Status.h"
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkUnstructuredGrid;
+
+namespace cgmesh
+{
+
+struct RefineStatistics
+{
+  std::string inputFile;
+  std::string outputFile;
+  std::int64_t inputPoints = 0;
+  std::int64_t inputCells = 0;
+  std::int64_t outputPoints = 0;
+  std::int64_t outputCells = 0;
+  int numberOfColors = 0;
+  int numberOfPartitions = 0;
+  int numberOfThreads = 0;
+  int numberOfIterations = 0;
+  double edgeLengthThreshold = 0;
+  // (phase, seconds) in pipeline order: the filter's phases, then reading and writing files.
+  std::vector<std::pair<std::string, double>> seconds;
+};
+
+// Fills counts, colours, partitions, threads, threshold and phase seconds from the filter output's
+// field data (see vtkCoarseGrainedMeshAdaptation).
+void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& statistics);
+
+void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stream);
+
+Status writeStatisticsJson(const RefineStatistics& statistics, const std::string& fileName);
+
+} // namespace cgmesh
+
+#endif

@@ -1,0 +1,54 @@
+// cgmesh: command-line driver of the coarse-grained mesh adaptation (same library as the plugin).
+#include "Commands.h"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+void printUsage(std::ostream& stream)
+{
+  stream << "usage: cgmesh <command> [arguments]\n"
+            "\n"
+            "commands:\n"
+            "  refine IN OUT [options]   refine a tetrahedral mesh (.vtu or .vtk)\n"
+            "  generate cube N OUT.vtu   write the unit cube as N^3 hexahedra of 6 tetrahedra\n"
+            "  check IN [options]        report conformity, orientation, volume and areas\n"
+            "\n"
+            "Run 'cgmesh <command> --help' for the options of a command.\n";
+}
+
+} // namespace
+
+int cgmesh::reportError(const std::string& message)
+{
+  std::cerr << "cgmesh: error: " << message << "\n";
+  return cgmesh::FailureExitStatus;
+}
+
+int main(int argc, char* argv[])
+{
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  if (arguments.empty())
+  {
+    printUsage(std::cerr);
+    return cgmesh::UsageErrorExitStatus;
+  }
+  const std::string& command = arguments.front();
+  const std::vector<std::string> commandArguments(arguments.begin() + 1, arguments.end());
+  if (command == "-h" || command == "--help" || command == "help")
+  {
+    printUsage(std::cout);
+    return 0;
+  }
+  if (command == "refine")
+    return cgmesh::runRefineCommand(commandArguments);
+  if (command == "generate")
+    return cgmesh::runGenerateCommand(commandArguments);
+  if (command == "check")
+    return cgmesh::runCheckCommand(commandArguments);
+  cgmesh::reportError("unknown command '" + command + "' (try cgmesh --help)");
+  return cgmesh::UsageErrorExitStatus;
+}

@@ -1,0 +1,37 @@
+// Conversion between vtkUnstructuredGrid and the VTK-free cgmesh::TetMesh, shared by the filter and
+// the command-line driver.
+#ifndef cgmeshVTKConversion_h
+#define cgmeshVTKConversion_h
+
+#include "cgmeshFiltersModule.h" // for export macro
+#include "vtkType.h"             // for vtkIdType
+
+#include "Kernels/Status.h"
+#include "Kernels/TetMesh.h"
+
+#include <string>
+
+class vtkUnstructuredGrid;
+
+namespace cgmesh
+{
+
+// Number of cells of `grid` that are not linear tetrahedra (VTK_TETRA).
+CGMESHFILTERS_EXPORT vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid);
+
+// Copies points and tetrahedra of `grid` into `mesh`. When `regionArrayName` is not empty the named
+// cell array (any numeric type, first component, converted to int) becomes mesh.regions; a missing
+// or non-numeric array is a failure. The grid must hold only VTK_TETRA cells.
+CGMESHFILTERS_EXPORT Status convertToTetMesh(vtkUnstructuredGrid* grid,
+  const std::string& regionArrayName,
+  TetMesh& mesh);
+
+// Replaces the geometry of `grid` with `mesh` (double points, VTK_TETRA cells). When the mesh has
+// regions and `regionArrayName` is not empty, they are stored as an int cell array of that name.
+CGMESHFILTERS_EXPORT void convertToUnstructuredGrid(const TetMesh& mesh,
+  vtkUnstructuredGrid* grid,
+  const std::string& regionArrayName = std::string());
+
+} // namespace cgmesh
+
+#endif

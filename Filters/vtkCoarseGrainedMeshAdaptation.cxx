@@ -1,0 +1,315 @@
+#include "vtkCoarseGrainedMeshAdaptation.h"
+
+#include "cgmeshVTKConversion.h"
+
+#include "AdaptationDriver.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMeshQuality.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <chrono>
+#include <cstring>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkCoarseGrainedMeshAdaptation);
+
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Share of the progress bar given to adaptMesh; the rest covers array transfer and quality.
+constexpr double AdaptationProgressShare = 0.85;
+
+void addFieldValue(vtkFieldData* fieldData, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfValues(1);
+  array->SetValue(0, value);
+  fieldData->AddArray(array);
+}
+
+void addFieldValue(vtkFieldData* fieldData, const char* name, int value)
+{
+  vtkNew<vtkIntArray> array;
+  array->SetName(name);
+  array->SetNumberOfValues(1);
+  array->SetValue(0, value);
+  fieldData->AddArray(array);
+}
+
+vtkSmartPointer<vtkIntArray> makeCellIntArray(const char* name, const std::vector<int>& values)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (size_t cellId = 0; cellId < values.size(); ++cellId)
+  {
+    array->SetValue(static_cast<vtkIdType>(cellId), values[cellId]);
+  }
+  return array;
+}
+
+// Every child cell receives all cell data of the input tet it came from.
+void copyCellDataToChildren(vtkCellData* inputCellData,
+  const std::vector<cgmesh::CellId>& parentCell,
+  vtkCellData* outputCellData)
+{
+  const vtkIdType numberOfCells = static_cast<vtkIdType>(parentCell.size());
+  outputCellData->CopyAllocate(inputCellData, numberOfCells);
+  vtkNew<vtkIdList> parentIds;
+  vtkNew<vtkIdList> childIds;
+  parentIds->SetNumberOfIds(numberOfCells);
+  childIds->SetNumberOfIds(numberOfCells);
+  for (vtkIdType childId = 0; childId < numberOfCells; ++childId)
+  {
+    parentIds->SetId(childId, static_cast<vtkIdType>(parentCell[childId]));
+    childIds->SetId(childId, childId);
+  }
+  outputCellData->CopyData(inputCellData, parentIds, childIds);
+}
+
+// Output point data is the provenance-weighted sum of input point data (exact for linear fields).
+void interpolatePointData(vtkPointData* inputPointData,
+  const cgmesh::PointProvenance& provenance,
+  vtkPointData* outputPointData)
+{
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(provenance.offsets.size()) - 1;
+  outputPointData->InterpolateAllocate(inputPointData, numberOfPoints);
+  vtkNew<vtkIdList> sourceIds;
+  std::vector<double> weights;
+  for (vtkIdType pointId = 0; pointId < numberOfPoints; ++pointId)
+  {
+    const auto begin = provenance.offsets[pointId];
+    const auto end = provenance.offsets[pointId + 1];
+    sourceIds->SetNumberOfIds(static_cast<vtkIdType>(end - begin));
+    weights.resize(static_cast<size_t>(end - begin));
+    for (auto source = begin; source < end; ++source)
+    {
+      sourceIds->SetId(static_cast<vtkIdType>(source - begin), provenance.sources[source]);
+      weights[source - begin] = provenance.weights[source];
+    }
+    outputPointData->InterpolatePoint(inputPointData, pointId, sourceIds, weights.data());
+  }
+}
+
+vtkSmartPointer<vtkDataArray> computeTetQuality(vtkUnstructuredGrid* geometry,
+  int measure,
+  const char* name)
+{
+  vtkNew<vtkMeshQuality> quality;
+  quality->SetInputData(geometry);
+  quality->SetTetQualityMeasure(measure);
+  quality->SaveCellQualityOn();
+  quality->Update();
+  vtkSmartPointer<vtkDataArray> array = quality->GetOutput()->GetCellData()->GetArray("Quality");
+  if (array)
+  {
+    array->SetName(name);
+  }
+  return array;
+}
+
+// Edge ratio and minimum dihedral angle (degrees) of every output tet; returns the seconds spent.
+double addQualityArrays(vtkUnstructuredGrid* output)
+{
+  const auto start = Clock::now();
+  vtkNew<vtkUnstructuredGrid> geometry; // points and cells only: no array copies in vtkMeshQuality
+  geometry->SetPoints(output->GetPoints());
+  geometry->SetCells(output->GetCellTypesArray(), output->GetCells());
+  const std::pair<int, const char*> measures[] = {
+    { static_cast<int>(vtkMeshQuality::QualityMeasureTypes::EDGE_RATIO), "EdgeRatio" },
+    { static_cast<int>(vtkMeshQuality::QualityMeasureTypes::MIN_ANGLE), "MinDihedralAngle" }
+  };
+  for (const auto& measure : measures)
+  {
+    vtkSmartPointer<vtkDataArray> array =
+      computeTetQuality(geometry, measure.first, measure.second);
+    if (array)
+    {
+      output->GetCellData()->AddArray(array);
+    }
+  }
+  return secondsSince(start);
+}
+
+void addFieldData(const cgmesh::AdaptationResult& result,
+  double qualitySeconds,
+  double totalSeconds,
+  vtkFieldData* fieldData)
+{
+  addFieldValue(fieldData, "NumberOfColors", result.numberOfColors);
+  addFieldValue(fieldData, "NumberOfPartitions", result.numberOfPartitions);
+  addFieldValue(fieldData, "NumberOfThreads", result.numberOfThreads);
+  addFieldValue(fieldData, "EdgeLengthThreshold", result.edgeLengthThreshold);
+  const cgmesh::PhaseSeconds& seconds = result.seconds;
+  addFieldValue(fieldData, "PartitionSeconds", seconds.partition);
+  addFieldValue(fieldData, "GraphSeconds", seconds.graph);
+  addFieldValue(fieldData, "ColorSeconds", seconds.color);
+  addFieldValue(fieldData, "HealSeconds", seconds.heal);
+  addFieldValue(fieldData, "AdaptSeconds", seconds.adapt);
+  addFieldValue(fieldData, "PostSeconds", seconds.post);
+  addFieldValue(fieldData, "MergeSeconds", seconds.merge);
+  addFieldValue(fieldData, "QualitySeconds", qualitySeconds);
+  addFieldValue(fieldData, "TotalSeconds", totalSeconds);
+}
+
+cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter)
+{
+  cgmesh::AdaptationOptions options;
+  options.numberOfPartitions = filter->GetNumberOfPartitions();
+  options.numberOfIterations = filter->GetNumberOfIterations();
+  options.maximumEdgeLength = filter->GetMaximumEdgeLength();
+  options.edgeLengthFactor = filter->GetEdgeLengthFactor();
+  options.numberOfThreads = filter->GetNumberOfThreads();
+  // The driver calls both hooks on the calling thread only.
+  options.progress = [filter](double fraction, const char*)
+  { filter->UpdateProgress(AdaptationProgressShare * fraction); };
+  options.abortRequested = [filter]() { return filter->CheckAbort(); };
+  return options;
+}
+
+void fillOutput(vtkUnstructuredGrid* input,
+  const cgmesh::AdaptationResult& result,
+  vtkUnstructuredGrid* output)
+{
+  cgmesh::convertToUnstructuredGrid(result.mesh, output);
+  copyCellDataToChildren(input->GetCellData(), result.parentCell, output->GetCellData());
+  interpolatePointData(input->GetPointData(), result.provenance, output->GetPointData());
+  output->GetCellData()->AddArray(makeCellIntArray("PartitionId", result.partitionOfCell));
+  output->GetCellData()->AddArray(makeCellIntArray("ColorId", result.colorOfCell));
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkCoarseGrainedMeshAdaptation::vtkCoarseGrainedMeshAdaptation()
+  : NumberOfPartitions(1024)
+  , NumberOfIterations(1)
+  , MaximumEdgeLength(0.0)
+  , EdgeLengthFactor(0.5)
+  , NumberOfThreads(0)
+  , RegionArrayName(nullptr)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkCoarseGrainedMeshAdaptation::~vtkCoarseGrainedMeshAdaptation()
+{
+  this->SetRegionArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkCoarseGrainedMeshAdaptation::ResolveRegionArrayName(vtkUnstructuredGrid* input) const
+{
+  if (!this->RegionArrayName || this->RegionArrayName[0] == '\0')
+  {
+    return std::string();
+  }
+  // "None" is ParaView's "no array" entry, unless the input really has an array of that name.
+  if (std::strcmp(this->RegionArrayName, "None") == 0 &&
+    !input->GetCellData()->GetAbstractArray("None"))
+  {
+    return std::string();
+  }
+  return this->RegionArrayName;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
+{
+  const vtkIdType nonTetrahedra = cgmesh::countNonTetrahedra(input);
+  if (nonTetrahedra > 0)
+  {
+    vtkErrorMacro(<< "The input must hold only linear tetrahedra, but " << nonTetrahedra
+                  << " of its " << input->GetNumberOfCells()
+                  << " cells are of other types. Apply ParaView's Tetrahedralize filter first.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  const auto start = Clock::now();
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  output->Initialize();
+  if (!input || input->GetNumberOfCells() == 0)
+  {
+    vtkWarningMacro(<< "The input has no cells; the output is empty.");
+    return 1;
+  }
+  if (!this->CheckInput(input))
+  {
+    return 0;
+  }
+
+  cgmesh::TetMesh inputMesh;
+  cgmesh::Status status =
+    cgmesh::convertToTetMesh(input, this->ResolveRegionArrayName(input), inputMesh);
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< "Cannot read the input: " << status.message() << ".");
+    return 0;
+  }
+
+  cgmesh::AdaptationResult result;
+  status = cgmesh::adaptMesh(inputMesh, makeOptions(this), result);
+  for (const std::string& warning : result.warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< "Mesh adaptation failed: " << status.message());
+    return 0;
+  }
+  if (result.aborted)
+  {
+    vtkWarningMacro(<< "Mesh adaptation was aborted; the output is empty.");
+    return 1;
+  }
+
+  fillOutput(input, result, output);
+  this->UpdateProgress(0.9);
+  const double qualitySeconds = addQualityArrays(output);
+  addFieldData(result, qualitySeconds, secondsSince(start), output->GetFieldData());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkCoarseGrainedMeshAdaptation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfPartitions: " << this->NumberOfPartitions << "\n";
+  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+  os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
+  os << indent << "EdgeLengthFactor: " << this->EdgeLengthFactor << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)")
+     << "\n";
+}

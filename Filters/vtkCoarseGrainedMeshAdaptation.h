@@ -1,0 +1,112 @@
+/**
+ * @class   vtkCoarseGrainedMeshAdaptation
+ * @brief   refine a tetrahedral mesh in parallel by running a serial kernel on coloured partitions
+ *
+ * The input (linear tetrahedra only) is partitioned with METIS into NumberOfPartitions parts. The
+ * partition graph (partitions sharing a vertex) is coloured, and for each of NumberOfIterations
+ * passes the partitions of one colour are refined concurrently: edges longer than the threshold are
+ * split by conforming templates, and interface splits are handed to the neighbours that follow.
+ * The threshold is MaximumEdgeLength when positive, else EdgeLengthFactor times the input's mean
+ * edge length.
+ *
+ * The output is one conforming tetrahedral grid. Input cell data is copied to every child cell and
+ * input point data is interpolated linearly onto new points. The output also holds the cell arrays
+ * PartitionId, ColorId, EdgeRatio and MinDihedralAngle (vtkMeshQuality, degrees) and field data
+ * with the colour, partition and thread counts, the threshold and the seconds spent per phase
+ * (PartitionSeconds, GraphSeconds, ColorSeconds, HealSeconds, AdaptSeconds, PostSeconds,
+ * MergeSeconds, QualitySeconds, TotalSeconds).
+ * The output does not depend on NumberOfThreads.
+ */
+#ifndef vtkCoarseGrainedMeshAdaptation_h
+#define vtkCoarseGrainedMeshAdaptation_h
+
+#include "cgmeshFiltersModule.h" // for export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+#include <string> // for std::string
+
+class vtkUnstructuredGrid;
+
+class CGMESHFILTERS_EXPORT vtkCoarseGrainedMeshAdaptation : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static vtkCoarseGrainedMeshAdaptation* New();
+  vtkTypeMacro(vtkCoarseGrainedMeshAdaptation, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Number of METIS partitions; reduced (with a warning) when the mesh is too small. Default 1024.
+   */
+  vtkSetClampMacro(NumberOfPartitions, int, 1, VTK_INT_MAX);
+  vtkGetMacro(NumberOfPartitions, int);
+  ///@}
+
+  ///@{
+  /**
+   * Number of refinement passes over all colours. Default 1.
+   */
+  vtkSetClampMacro(NumberOfIterations, int, 1, VTK_INT_MAX);
+  vtkGetMacro(NumberOfIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Edges longer than this absolute length are split. Not used when not positive (default 0).
+   */
+  vtkSetMacro(MaximumEdgeLength, double);
+  vtkGetMacro(MaximumEdgeLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Split threshold as a fraction of the input's mean edge length, used when MaximumEdgeLength is
+   * not positive. Default 0.5.
+   */
+  vtkSetClampMacro(EdgeLengthFactor, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(EdgeLengthFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Number of OpenMP threads; 0 (default) uses all cores. The output does not depend on it.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
+   * Optional name of a numeric cell array holding material/region ids (converted to int). Unset,
+   * empty or "None" (default; ParaView's "no array" choice) means a single region, unless the input
+   * really has a cell array called "None". Any other name that is not a cell array of the input is
+   * an error.
+   */
+  vtkSetStringMacro(RegionArrayName);
+  vtkGetStringMacro(RegionArrayName);
+  ///@}
+
+protected:
+  vtkCoarseGrainedMeshAdaptation();
+  ~vtkCoarseGrainedMeshAdaptation() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  // The region array name to use: empty when unset, empty or ParaView's "None" entry.
+  std::string ResolveRegionArrayName(vtkUnstructuredGrid* input) const;
+  // Reports an error and returns false unless every input cell is a linear tetrahedron.
+  bool CheckInput(vtkUnstructuredGrid* input);
+
+  int NumberOfPartitions;
+  int NumberOfIterations;
+  double MaximumEdgeLength;
+  double EdgeLengthFactor;
+  int NumberOfThreads;
+  char* RegionArrayName;
+
+private:
+  vtkCoarseGrainedMeshAdaptation(const vtkCoarseGrainedMeshAdaptation&) = delete;
+  void operator=(const vtkCoarseGrainedMeshAdaptation&) = delete;
+};
+
+#endif

@@ -1,0 +1,192 @@
+// Error paths and properties of vtkCoarseGrainedMeshAdaptation: non-tetrahedral input, a missing
+// region array, empty input, ParaView's "None" region choice, defaults, clamping and PrintSelf.
+#include "FilterTestSupport.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkCoarseGrainedMeshAdaptation.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+namespace
+{
+
+// Counts errors and warnings and keeps the last message (and keeps VTK from printing them).
+class MessageCounter : public vtkCommand
+{
+public:
+  static MessageCounter* New() { return new MessageCounter; }
+  void Execute(vtkObject*, unsigned long eventId, void* callData) override
+  {
+    (eventId == vtkCommand::ErrorEvent ? this->Errors : this->Warnings)++;
+    this->AllMessages += callData ? static_cast<const char*>(callData) : "";
+    this->AllMessages += "\n";
+  }
+  int Errors = 0;
+  int Warnings = 0;
+  std::string AllMessages;
+};
+
+struct FilterRun
+{
+  vtkNew<vtkCoarseGrainedMeshAdaptation> Filter;
+  vtkNew<MessageCounter> Messages;
+  int UpdateResult = 0;
+
+  explicit FilterRun(vtkUnstructuredGrid* input)
+  {
+    this->Filter->SetInputData(input);
+    this->Filter->SetNumberOfPartitions(4);
+    for (vtkObject* object : { static_cast<vtkObject*>(this->Filter.Get()),
+           static_cast<vtkObject*>(this->Filter->GetExecutive()) })
+    {
+      object->AddObserver(vtkCommand::ErrorEvent, this->Messages);
+      object->AddObserver(vtkCommand::WarningEvent, this->Messages);
+    }
+  }
+  void update() { this->UpdateResult = this->Filter->GetExecutive()->Update(); }
+  vtkIdType outputCells() { return this->Filter->GetOutput()->GetNumberOfCells(); }
+};
+
+// One hexahedron next to one tetrahedron.
+vtkSmartPointer<vtkUnstructuredGrid> makeMixedGrid()
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  const double coordinates[9][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+    { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 }, { 2, 0, 0 } };
+  for (const auto& point : coordinates)
+    points->InsertNextPoint(point);
+  grid->SetPoints(points);
+  const vtkIdType hexahedron[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  const vtkIdType tetrahedron[4] = { 1, 8, 2, 5 };
+  grid->InsertNextCell(VTK_HEXAHEDRON, 8, hexahedron);
+  grid->InsertNextCell(VTK_TETRA, 4, tetrahedron);
+  return grid;
+}
+
+void test_nonTetrahedralInput()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = makeMixedGrid();
+  const vtkMTimeType inputTime = input->GetMTime();
+  FilterRun run(input);
+  run.update();
+  CGMESH_CHECK(run.Messages->Errors > 0, "no error for a hexahedron in the input");
+  CGMESH_CHECK(run.Messages->AllMessages.find("Tetrahedralize") != std::string::npos,
+    "the error does not point to Tetrahedralize: " << run.Messages->AllMessages);
+  CGMESH_CHECK(run.Messages->AllMessages.find("1 of its 2 cells") != std::string::npos,
+    "the error does not count the non-tetrahedral cells: " << run.Messages->AllMessages);
+  CGMESH_CHECK(run.UpdateResult == 0, "Update succeeded on non-tetrahedral input");
+  CGMESH_CHECK(run.outputCells() == 0, "output not empty after an error");
+  CGMESH_CHECK(
+    input->GetMTime() == inputTime && input->GetNumberOfCells() == 2, "the input was modified");
+}
+
+void test_missingRegionArray()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(2);
+  FilterRun run(input);
+  run.Filter->SetRegionArrayName("NoSuchArray");
+  run.update();
+  CGMESH_CHECK(run.Messages->Errors > 0, "no error for a missing region array");
+  CGMESH_CHECK(run.outputCells() == 0, "output not empty after a missing region array");
+}
+
+void test_regionArrayChoices()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(2);
+  for (const char* name : { "None", "", "Material" })
+  {
+    FilterRun run(input);
+    run.Filter->SetRegionArrayName(name);
+    run.update();
+    CGMESH_CHECK(run.Messages->Errors == 0 && run.outputCells() > 0,
+      "region array '" << name << "' rejected: " << run.Messages->AllMessages);
+  }
+}
+
+void test_emptyInput()
+{
+  vtkNew<vtkUnstructuredGrid> input;
+  FilterRun run(input);
+  run.update();
+  CGMESH_CHECK(run.Messages->Errors == 0, "empty input is not an error");
+  CGMESH_CHECK(run.Messages->Warnings > 0, "no warning for empty input");
+  CGMESH_CHECK(run.outputCells() == 0, "output of empty input not empty");
+}
+
+// Sets AbortExecute from the first progress report after the start, as ParaView's abort does.
+class AbortOnProgress : public vtkCommand
+{
+public:
+  static AbortOnProgress* New() { return new AbortOnProgress; }
+  void Execute(vtkObject* caller, unsigned long, void* callData) override
+  {
+    const double progress = *static_cast<double*>(callData);
+    if (progress > 0.0 && progress < 0.85)
+      vtkAlgorithm::SafeDownCast(caller)->SetAbortExecute(1);
+  }
+};
+
+void test_abort()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(6);
+  FilterRun run(input);
+  run.Filter->SetNumberOfPartitions(64);
+  vtkNew<AbortOnProgress> abort;
+  run.Filter->AddObserver(vtkCommand::ProgressEvent, abort);
+  run.update();
+  CGMESH_CHECK(run.Messages->Errors == 0, "an abort is not an error");
+  CGMESH_CHECK(run.Messages->AllMessages.find("aborted") != std::string::npos,
+    "no message for an aborted run: " << run.Messages->AllMessages);
+  CGMESH_CHECK(run.outputCells() == 0, "output of an aborted run not empty");
+}
+
+void test_defaultsAndClamping()
+{
+  vtkNew<vtkCoarseGrainedMeshAdaptation> filter;
+  CGMESH_CHECK(filter->GetNumberOfPartitions() == 1024, "NumberOfPartitions default");
+  CGMESH_CHECK(filter->GetNumberOfIterations() == 1, "NumberOfIterations default");
+  CGMESH_CHECK(filter->GetMaximumEdgeLength() == 0.0, "MaximumEdgeLength default");
+  CGMESH_CHECK(filter->GetEdgeLengthFactor() == 0.5, "EdgeLengthFactor default");
+  CGMESH_CHECK(filter->GetNumberOfThreads() == 0, "NumberOfThreads default");
+  CGMESH_CHECK(filter->GetRegionArrayName() == nullptr, "RegionArrayName default");
+  filter->SetNumberOfPartitions(0);
+  filter->SetNumberOfIterations(-3);
+  filter->SetNumberOfThreads(-1);
+  CGMESH_CHECK(filter->GetNumberOfPartitions() == 1, "NumberOfPartitions not clamped to 1");
+  CGMESH_CHECK(filter->GetNumberOfIterations() == 1, "NumberOfIterations not clamped to 1");
+  CGMESH_CHECK(filter->GetNumberOfThreads() == 0, "NumberOfThreads not clamped to 0");
+  std::ostringstream printed;
+  filter->Print(printed);
+  for (const char* member : { "NumberOfPartitions", "NumberOfIterations", "MaximumEdgeLength",
+         "EdgeLengthFactor", "NumberOfThreads", "RegionArrayName" })
+  {
+    CGMESH_CHECK(printed.str().find(member) != std::string::npos, "PrintSelf omits " << member);
+  }
+}
+
+} // namespace
+
+int main()
+{
+  test_nonTetrahedralInput();
+  test_missingRegionArray();
+  test_regionArrayChoices();
+  test_emptyInput();
+  test_abort();
+  test_defaultsAndClamping();
+  if (cgmesh_test::FailureCount > 0)
+  {
+    std::cerr << cgmesh_test::FailureCount << " checks failed\n";
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
