@@ -32,7 +32,9 @@ void printReport(const MeshReport& report, std::ostream& stream)
 {
   stream << std::left << std::setprecision(12);
   const auto line = [&stream](const char* label) -> std::ostream&
-  { return stream << std::setw(28) << label; };
+  {
+    return stream << std::setw(28) << label;
+  };
   line("points") << report.numberOfPoints << "\n";
   line("tetrahedra") << report.numberOfTets << "\n";
   line("boundary faces") << report.boundaryFaces << "\n";

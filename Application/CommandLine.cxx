@@ -21,11 +21,8 @@ bool wantsHelp(const std::vector<std::string>& arguments)
   return false;
 }
 
-Status parseInt(const std::string& text,
-  const std::string& what,
-  int minimum,
-  int maximum,
-  int& value)
+Status parseInt(
+  const std::string& text, const std::string& what, int minimum, int maximum, int& value)
 {
   errno = 0;
   char* end = nullptr;
@@ -58,8 +55,7 @@ namespace
 
 // Splits arguments into positionals and "--name value" / "--name=value" options.
 Status splitArguments(const std::vector<std::string>& arguments,
-  std::vector<std::string>& positionals,
-  std::map<std::string, std::string>& options)
+  std::vector<std::string>& positionals, std::map<std::string, std::string>& options)
 {
   for (size_t index = 0; index < arguments.size(); ++index)
   {
@@ -94,9 +90,8 @@ Status splitArguments(const std::vector<std::string>& arguments,
   return Status::success();
 }
 
-Status checkPositionalCount(const std::vector<std::string>& positionals,
-  size_t expected,
-  const std::string& usage)
+Status checkPositionalCount(
+  const std::vector<std::string>& positionals, size_t expected, const std::string& usage)
 {
   if (positionals.size() != expected)
   {
@@ -164,16 +159,36 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
   Status status = splitArguments(arguments, positionals, options);
   if (!status.ok())
     return status;
-  if (!options.empty())
-    return Status::failure("unknown option " + options.begin()->first + " (see --help)");
-  status = checkPositionalCount(positionals, 3, "cube N OUT.vtu");
-  if (!status.ok())
-    return status;
-  if (positionals[0] != "cube")
-    return Status::failure("unknown shape '" + positionals[0] + "' (only 'cube' is available)");
+  if (positionals.empty())
+    return Status::failure("expected 'cube N OUT.vtu' or 'finfet OUT.vtu [--cells N]'");
   parsed.shape = positionals[0];
-  parsed.outputFile = positionals[2];
-  return parseInt(positionals[1], "N", 1, 1000, parsed.cellsPerSide);
+  if (parsed.shape == "cube")
+  {
+    if (!options.empty())
+      return Status::failure("unknown option " + options.begin()->first + " (see --help)");
+    status = checkPositionalCount(positionals, 3, "cube N OUT.vtu");
+    if (!status.ok())
+      return status;
+    parsed.outputFile = positionals[2];
+    return parseInt(positionals[1], "N", 1, 1000, parsed.cellsPerSide);
+  }
+  if (parsed.shape == "finfet")
+  {
+    status = checkPositionalCount(positionals, 2, "finfet OUT.vtu [--cells N]");
+    if (!status.ok())
+      return status;
+    parsed.outputFile = positionals[1];
+    for (const auto& option : options)
+    {
+      if (option.first != "--cells")
+        return Status::failure("unknown option " + option.first + " (see --help)");
+      status = parseInt(option.second, "--cells", 1000, 500000000, parsed.targetCells);
+      if (!status.ok())
+        return status;
+    }
+    return Status::success();
+  }
+  return Status::failure("unknown shape '" + parsed.shape + "' (use 'cube' or 'finfet')");
 }
 
 Status parseCheckArguments(const std::vector<std::string>& arguments, CheckArguments& parsed)

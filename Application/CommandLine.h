@@ -26,8 +26,9 @@ struct RefineArguments
 
 struct GenerateArguments
 {
-  std::string shape; // only "cube" for now
-  int cellsPerSide = 0;
+  std::string shape;        // "cube" or "finfet"
+  int cellsPerSide = 0;     // cube
+  int targetCells = 837584; // finfet: about this many tetrahedra
   std::string outputFile;
 };
 
@@ -46,11 +47,8 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
 Status parseCheckArguments(const std::vector<std::string>& arguments, CheckArguments& parsed);
 
 // Strict number parsing: the whole text must be a number within [minimum, maximum].
-Status parseInt(const std::string& text,
-  const std::string& what,
-  int minimum,
-  int maximum,
-  int& value);
+Status parseInt(
+  const std::string& text, const std::string& what, int minimum, int maximum, int& value);
 Status parseDouble(const std::string& text, const std::string& what, double minimum, double& value);
 
 } // namespace cgmesh

@@ -1,12 +1,15 @@
-// cgmesh generate cube N OUT.vtu: benchmark meshes.
+// cgmesh generate cube N OUT.vtu | finfet OUT.vtu [--cells N]: benchmark meshes.
 #include "Commands.h"
 
 #include "CommandLine.h"
 #include "CubeGenerator.h"
+#include "FinFetGenerator.h"
 #include "MeshFiles.h"
 #include "cgmeshVTKConversion.h"
 
+#include "vtkFieldData.h"
 #include "vtkNew.h"
+#include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <iostream>
@@ -20,9 +23,15 @@ namespace
 void printGenerateUsage()
 {
   std::cout << "usage: cgmesh generate cube N OUT.vtu\n"
+               "       cgmesh generate finfet OUT.vtu [--cells N]\n"
                "\n"
-               "Writes the unit cube cut into N^3 hexahedra of 6 positively oriented tetrahedra\n"
-               "each (N=10: the 6,000-tet Small cube, N=25: the 93,750-tet Big cube).\n"
+               "cube:   the unit cube cut into N^3 hexahedra of 6 positively oriented tetrahedra\n"
+               "        each (N=10: the 6,000-tet Small cube, N=25: the 93,750-tet Big cube).\n"
+               "finfet: a double-gate FinFET (nm units) with about N tetrahedra (default 837584)\n"
+               "        on a graded structured grid whose planes follow every material boundary;\n"
+               "        cell array 'Material' holds the material ids, field data 'MaterialNames'\n"
+               "        their names (substrate, buried oxide, fin channel, source, drain, gate\n"
+               "        oxide, gate, spacer, isolation oxide).\n"
                "OUT may be .vtu or .vtk.\n";
 }
 
@@ -47,11 +56,23 @@ int runGenerateCommand(const std::vector<std::string>& commandArguments)
   if (!status.ok())
     return reportError(status.message());
   TetMesh mesh;
-  status = generateKuhnCube(arguments.cellsPerSide, mesh);
+  const bool isFinFet = arguments.shape == "finfet";
+  status = isFinFet ? generateFinFet(arguments.targetCells, mesh)
+                    : generateKuhnCube(arguments.cellsPerSide, mesh);
   if (!status.ok())
     return reportError(status.message());
   vtkNew<vtkUnstructuredGrid> grid;
-  convertToUnstructuredGrid(mesh, grid);
+  convertToUnstructuredGrid(mesh, grid, "Material");
+  if (isFinFet)
+  {
+    vtkNew<vtkStringArray> names;
+    names->SetName("MaterialNames");
+    for (const std::string& name : finFetMaterialNames())
+    {
+      names->InsertNextValue(name);
+    }
+    grid->GetFieldData()->AddArray(names);
+  }
   status = writeUnstructuredGrid(grid, arguments.outputFile);
   if (!status.ok())
     return reportError(status.message());

@@ -16,14 +16,9 @@ namespace
 
 // JSON key of each phase and the field-data array the filter stores it in.
 const std::pair<const char*, const char*> FilterPhases[] = { { "partition", "PartitionSeconds" },
-  { "graph", "GraphSeconds" },
-  { "color", "ColorSeconds" },
-  { "heal", "HealSeconds" },
-  { "adapt", "AdaptSeconds" },
-  { "post", "PostSeconds" },
-  { "merge", "MergeSeconds" },
-  { "quality", "QualitySeconds" },
-  { "total", "TotalSeconds" } };
+  { "graph", "GraphSeconds" }, { "color", "ColorSeconds" }, { "heal", "HealSeconds" },
+  { "adapt", "AdaptSeconds" }, { "post", "PostSeconds" }, { "merge", "MergeSeconds" },
+  { "quality", "QualitySeconds" }, { "total", "TotalSeconds" } };
 
 double fieldValue(vtkFieldData* fieldData, const char* name)
 {

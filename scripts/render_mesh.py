@@ -1,11 +1,17 @@
 """Renders a refined mesh coloured by ColorId, clipped so that the interior cells show.
 
+When the mesh has a Material array with an isolation oxide (id 8, as written by
+`cgmesh generate finfet`), that surrounding oxide is left out so that the device shows.
+
 Usage: pvbatch render_mesh.py IN.vtu OUT.png   (under xvfb-run: rendering needs an X server)
 """
 import sys
 
 from paraview.simple import (Clip, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction,
-                             Render, ResetCamera, SaveScreenshot, Show, XMLUnstructuredGridReader)
+                             Render, ResetCamera, SaveScreenshot, Show, Threshold,
+                             XMLUnstructuredGridReader)
+
+ISOLATION_OXIDE = 8
 
 
 def render(input_file, image_file):
@@ -15,11 +21,17 @@ def render(input_file, image_file):
     center = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
               (bounds[4] + bounds[5]) / 2]
 
-    # Keep whole cells on one side of a plane through the centre: the cut shows inner cells.
-    clip = Clip(Input=reader)
+    source = reader
+    material = reader.CellData.GetArray("Material")
+    if material is not None and material.GetRange()[1] >= ISOLATION_OXIDE:
+        source = Threshold(Input=reader, Scalars=["CELLS", "Material"],
+                           LowerThreshold=0, UpperThreshold=ISOLATION_OXIDE - 1)
+
+    # Keep whole cells behind a plane through the centre (y below it): the cut shows inner cells.
+    clip = Clip(Input=source)
     clip.ClipType = "Plane"
     clip.ClipType.Origin = center
-    clip.ClipType.Normal = [1.0, 0.0, 0.0]
+    clip.ClipType.Normal = [0.0, 1.0, 0.0]
     clip.Crinkleclip = 1
 
     view = GetActiveViewOrCreate("RenderView")
@@ -33,9 +45,10 @@ def render(input_file, image_file):
     colors.ApplyPreset("Rainbow Uniform", True)
     display.SetScalarBarVisibility(view, True)
 
-    view.CameraPosition = [center[0] + 2.0 * (bounds[1] - bounds[0]) + 1e-9,
-                           center[1] - 1.5 * (bounds[3] - bounds[2]) - 1e-9,
-                           center[2] + 1.2 * (bounds[5] - bounds[4]) + 1e-9]
+    # Look at the cut face (it faces +y) from above and in front.
+    view.CameraPosition = [center[0] + 0.8 * (bounds[1] - bounds[0]) + 1e-9,
+                           center[1] + 2.0 * (bounds[3] - bounds[2]) + 1e-9,
+                           center[2] + 0.9 * (bounds[5] - bounds[4]) + 1e-9]
     view.CameraFocalPoint = center
     view.CameraViewUp = [0.0, 0.0, 1.0]
     ResetCamera(view)
