@@ -6,6 +6,10 @@
 #include "MeshPartitioner.h"
 #include "ParallelFor.h"
 #include "PartitionColoring.h"
+#include "TetGenWorkers.h"
+
+#include <memory>
+#include <mutex>
 
 #include <algorithm>
 #include <chrono>
@@ -59,9 +63,21 @@ Status validateInput(const TetMesh& input, const AdaptationOptions& options)
   {
     return Status::failure("partitioning by region needs a region array");
   }
-  if (!(options.maximumEdgeLength > 0) && !(options.edgeLengthFactor > 0))
+  if (options.method == RefinementMethod::Template && !(options.maximumEdgeLength > 0) &&
+    !(options.edgeLengthFactor > 0))
   {
     return Status::failure("set a positive maximum edge length or edge length factor");
+  }
+  if (options.method == RefinementMethod::Delaunay)
+  {
+    if (!(options.maximumVolume > 0) && !(options.volumeFactor > 0))
+    {
+      return Status::failure("set a positive maximum volume or volume factor");
+    }
+    if (!(options.radiusEdgeRatio >= 1.0))
+    {
+      return Status::failure("the radius-edge ratio bound must be at least 1");
+    }
   }
   return Status::success();
 }
@@ -79,6 +95,16 @@ double meanTetEdgeLength(const TetMesh& mesh)
     }
   }
   return mesh.tets.empty() ? 0 : sum / (6.0 * static_cast<double>(mesh.tets.size()));
+}
+
+double meanTetVolume(const TetMesh& mesh)
+{
+  double sum = 0;
+  for (const Tet& tet : mesh.tets)
+  {
+    sum += std::abs(signedVolume6(mesh, tet)) / 6.0;
+  }
+  return mesh.tets.empty() ? 0 : sum / static_cast<double>(mesh.tets.size());
 }
 
 void distributeTets(
@@ -176,7 +202,30 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   setup.threads = result.numberOfThreads;
   setup.squaredThreshold = result.edgeLengthThreshold * result.edgeLengthThreshold;
   setup.templates = &templates;
+  setup.method = options.method;
+  setup.delaunay.maximumVolume = result.volumeBound;
+  setup.delaunay.radiusEdgeRatio = options.radiusEdgeRatio;
+  std::unique_ptr<TetGenWorkerPool> tetgenWorkers;
+  std::mutex serialTetGen;
+  if (options.method == RefinementMethod::Delaunay)
+  {
+    const bool serialize = options.serializeTetGen;
+    tetgenWorkers = std::make_unique<TetGenWorkerPool>(serialize ? 1 : result.numberOfThreads);
+    result.concurrentTetGen = !serialize && result.numberOfThreads > 1;
+    TetGenWorkerPool* pool = tetgenWorkers.get();
+    setup.runTetGen = [pool, serialize, &serialTetGen](
+                        const tetgenio& in, const std::string& switches, tetgenio& out)
+    {
+      if (serialize)
+      {
+        std::lock_guard<std::mutex> lock(serialTetGen);
+        return pool->run(0, in, switches, out);
+      }
+      return pool->run(currentThreadIndex(), in, switches, out);
+    };
+  }
   status = runColorLoop(setup, options, state, result);
+  tetgenWorkers.reset();
   if (!status.ok() || result.aborted)
   {
     return status;
@@ -185,7 +234,7 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   const auto start = Clock::now();
   MergedMesh merged;
   status = mergePartitions(
-    state.partitions, state.coordinates, state.inputPointCount, state.newPointParents, merged);
+    state.partitions, state.coordinates, state.inputPointCount, state.newPointSources, merged);
   state = AdaptationState();
   result.seconds.merge = secondsSince(start);
   if (!status.ok())
@@ -223,9 +272,18 @@ Status adaptMesh(const TetMesh& input, const AdaptationOptions& options, Adaptat
     return status;
   }
   result.numberOfThreads = resolveThreadCount(options.numberOfThreads);
-  result.edgeLengthThreshold = options.maximumEdgeLength > 0
-    ? options.maximumEdgeLength
-    : options.edgeLengthFactor * meanTetEdgeLength(input);
+  if (options.method == RefinementMethod::Delaunay)
+  {
+    result.volumeBound = options.maximumVolume > 0 ? options.maximumVolume
+                                                   : options.volumeFactor * meanTetVolume(input);
+    result.edgeLengthThreshold = interfaceEdgeLengthForVolume(result.volumeBound);
+  }
+  else
+  {
+    result.edgeLengthThreshold = options.maximumEdgeLength > 0
+      ? options.maximumEdgeLength
+      : options.edgeLengthFactor * meanTetEdgeLength(input);
+  }
   result.numberOfPartitions = options.numberOfPartitions;
   if (!options.partitionByRegion && input.numberOfTets() > 0 &&
     options.numberOfPartitions > input.numberOfTets())

@@ -15,13 +15,31 @@
 namespace cgmesh
 {
 
+enum class RefinementMethod
+{
+  Template, // split long edges by templates
+  Delaunay  // templates on interfaces, TetGen inside partitions
+};
+
 struct AdaptationOptions
 {
+  RefinementMethod method = RefinementMethod::Template;
   int numberOfPartitions = 1024; // clamped (with a warning) when the mesh is too small
   int numberOfIterations = 1;    // full passes of the colour loop
   double maximumEdgeLength = 0;  // absolute split threshold; used when > 0
   double edgeLengthFactor = 0.5; // else threshold = factor * mean input edge length
   int numberOfThreads = 0;       // 0 = all available cores
+  // Delaunay: TetGen's volume bound, absolute when > 0, else volumeFactor * mean input tet
+  // volume; interface edges are split by templates up to the edge length of a regular tet of
+  // that volume.
+  double maximumVolume = 0;
+  double volumeFactor = 0.1;
+  double radiusEdgeRatio = 2.0; // Delaunay: TetGen's radius-edge quality bound (q)
+  // Delaunay: run TetGen calls one at a time even where they could overlap (a reference for
+  // stress tests, and a way out should a TetGen build misbehave).
+  bool serializeTetGen = false;
+  // Partitions whose TetGen call is made to fail, to exercise the fallback (tests).
+  std::vector<int> simulateTetGenFailureIn;
   std::string coloring =
     "greedy-lu";                  // see coloringNames(): greedy, greedy-lu, iterative, recoloring
   bool partitionByRegion = false; // cut along regions (needs input regions) instead of METIS
@@ -55,10 +73,18 @@ struct AdaptationResult
   PointProvenance provenance;       // per output point, over input point ids
   int numberOfPartitions = 0;       // after clamping
   int numberOfColors = 0;
-  int numberOfThreads = 0;        // threads actually used
-  double edgeLengthThreshold = 0; // the absolute threshold that was applied
-  std::int64_t healedSplits = 0;  // interface splits taken over from a neighbour's outbox
-  std::int64_t createdSplits = 0; // edge splits made (each new point once)
+  int numberOfThreads = 0;             // threads actually used
+  double edgeLengthThreshold = 0;      // the absolute threshold that was applied
+  std::int64_t healedSplits = 0;       // interface splits taken over from a neighbour's outbox
+  std::int64_t createdSplits = 0;      // edge splits made (each new point once)
+  double volumeBound = 0;              // Delaunay: the absolute volume bound that was applied
+  std::int64_t delaunayFallbacks = 0;  // partition refinements that fell back to templates
+  std::vector<int> fallbackPartitions; // their partitions (with repeats across iterations)
+  std::int64_t tetgenPoints = 0;       // Steiner points TetGen inserted
+  bool concurrentTetGen = false;       // TetGen calls overlapped (in separate worker processes)
+  // Seconds each partition's heal and refinement took, per iteration: entry
+  // iteration * numberOfPartitions + partition (the data for makespan models).
+  std::vector<double> partitionTaskSeconds;
   std::vector<std::int64_t> partitionsPerColor; // colour population, in partitions
   std::vector<std::int64_t> cellsPerColor;      // colour population, in output tets
   double colorBalance = 0;                      // largest colour set / mean (partitions)

@@ -2,6 +2,7 @@
 
 #include "ParallelFor.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace cgmesh
@@ -9,9 +10,11 @@ namespace cgmesh
 namespace
 {
 
-double secondsSince(std::chrono::steady_clock::time_point start)
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
 {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 std::vector<std::vector<int>> partitionsByColor(
@@ -25,17 +28,109 @@ std::vector<std::vector<int>> partitionsByColor(
   return members;
 }
 
-// Processes one colour: the parallel heal and adapt loops, then the serial numbering of the new
-// points in partition order (deterministic for any thread count), then the parallel rewrite.
-Status processColor(const ColorLoopSetup& setup, const std::vector<int>& members, int color,
-  const RefinementContext& context, std::vector<PartitionRefinement>& refinements,
+// What one partition's task reports back to the serial part of the loop.
+struct TaskReport
+{
+  Status status = Status::success();
+  DelaunayOutcome delaunay;
+  double seconds = 0;
+};
+
+// Everything one iteration's partition tasks share.
+struct IterationContext
+{
+  const ColorLoopSetup& setup;
+  const AdaptationOptions& options;
+  RefinementContext refinement;
+  std::vector<PartitionRefinement> refinements;
+};
+
+TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& state, int partition,
+  const EdgeMidpointMap& received)
+{
+  TaskReport report;
+  const auto start = Clock::now();
+  PartitionRefinement& refinement = iteration.refinements[partition];
+  if (iteration.setup.method == RefinementMethod::Template)
+  {
+    report.status =
+      refinePartition(state.partitions[partition], iteration.refinement, received, refinement);
+  }
+  else
+  {
+    DelaunayParameters parameters = iteration.setup.delaunay;
+    const auto& failing = iteration.options.simulateTetGenFailureIn;
+    parameters.simulateFailure =
+      std::find(failing.begin(), failing.end(), partition) != failing.end();
+    report.status = refinePartitionDelaunay(state.partitions[partition], iteration.refinement,
+      received, parameters, iteration.setup.runTetGen, refinement, report.delaunay);
+  }
+  report.seconds = secondsSince(start);
+  return report;
+}
+
+void recordReports(const std::vector<int>& members, const std::vector<TaskReport>& reports,
+  int iteration, AdaptationResult& result)
+{
+  for (std::size_t i = 0; i < members.size(); ++i)
+  {
+    const TaskReport& report = reports[i];
+    result.partitionTaskSeconds[iteration * result.numberOfPartitions + members[i]] +=
+      report.seconds;
+    result.tetgenPoints += report.delaunay.tetgenPoints;
+    if (report.delaunay.fellBack)
+    {
+      ++result.delaunayFallbacks;
+      result.fallbackPartitions.push_back(members[i]);
+      result.warnings.push_back("partition " + std::to_string(members[i]) +
+        ": Delaunay refinement failed (" + report.delaunay.reason +
+        "); refined by templates instead");
+    }
+  }
+}
+
+// Gives the colour's new points global ids: prefix sums in partition order (the same for any
+// thread count), then each partition rewrites its own references in parallel.
+Status numberNewPoints(IterationContext& iteration, const std::vector<int>& members,
   AdaptationState& state, AdaptationResult& result)
 {
+  std::vector<PointId> firstId(members.size());
+  PointId next = static_cast<PointId>(state.coordinates.size() / 3);
+  for (std::size_t i = 0; i < members.size(); ++i)
+  {
+    firstId[i] = next;
+    next += static_cast<PointId>(iteration.refinements[members[i]].newPointSources.size());
+  }
+  Status status = runParallel(iteration.setup.threads, static_cast<std::int64_t>(members.size()),
+    [&](std::int64_t i)
+    {
+      const int p = members[i];
+      finalizeNewPoints(state.partitions[p], iteration.refinements[p], firstId[i]);
+    });
+  for (int p : members)
+  {
+    PartitionRefinement& refinement = iteration.refinements[p];
+    state.coordinates.insert(
+      state.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
+    state.newPointSources.insert(state.newPointSources.end(), refinement.newPointSources.begin(),
+      refinement.newPointSources.end());
+    result.healedSplits += refinement.healedSplits;
+    result.createdSplits += refinement.createdSplits;
+    refinement.newCoordinates = std::vector<double>();
+    refinement.newPointSources = std::vector<PointSource>();
+  }
+  return status;
+}
+
+Status processColor(IterationContext& iteration, const std::vector<int>& members, int color,
+  int iterationIndex, AdaptationState& state, AdaptationResult& result)
+{
+  const ColorLoopSetup& setup = iteration.setup;
   const auto& colorOf = *setup.colorOfPartition;
   const std::int64_t count = static_cast<std::int64_t>(members.size());
   std::vector<EdgeMidpointMap> received(members.size());
 
-  auto start = std::chrono::steady_clock::now();
+  auto start = Clock::now();
   Status status = runParallel(setup.threads, count,
     [&](std::int64_t i)
     {
@@ -46,7 +141,7 @@ Status processColor(const ColorLoopSetup& setup, const std::vector<int>& members
       {
         if (colorOf[neighbours[k]] < color)
         {
-          processedNeighbours.push_back(&refinements[neighbours[k]].outbox);
+          processedNeighbours.push_back(&iteration.refinements[neighbours[k]].outbox);
         }
       }
       collectReceivedSplits(processedNeighbours, received[i]);
@@ -57,21 +152,21 @@ Status processColor(const ColorLoopSetup& setup, const std::vector<int>& members
     return status;
   }
 
-  start = std::chrono::steady_clock::now();
-  std::vector<Status> outcomes(members.size(), Status::success());
+  start = Clock::now();
+  std::vector<TaskReport> reports(members.size());
   status = runParallel(setup.threads, count,
     [&](std::int64_t i)
     {
-      const int p = members[i];
-      outcomes[i] = refinePartition(state.partitions[p], context, received[i], refinements[p]);
+      reports[i] = refineOnePartition(iteration, state, members[i], received[i]);
       received[i] = EdgeMidpointMap();
     });
   result.seconds.adapt += secondsSince(start);
-  for (const Status& outcome : outcomes)
+  recordReports(members, reports, iterationIndex, result);
+  for (const TaskReport& report : reports)
   {
-    if (!outcome.ok())
+    if (!report.status.ok())
     {
-      return outcome;
+      return report.status;
     }
   }
   if (!status.ok())
@@ -79,27 +174,8 @@ Status processColor(const ColorLoopSetup& setup, const std::vector<int>& members
     return status;
   }
 
-  start = std::chrono::steady_clock::now();
-  std::vector<PointId> firstId(members.size());
-  for (std::size_t i = 0; i < members.size(); ++i)
-  {
-    PartitionRefinement& refinement = refinements[members[i]];
-    firstId[i] = static_cast<PointId>(state.coordinates.size() / 3);
-    state.coordinates.insert(
-      state.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
-    state.newPointParents.insert(state.newPointParents.end(), refinement.newPointParents.begin(),
-      refinement.newPointParents.end());
-    result.healedSplits += refinement.healedSplits;
-    result.createdSplits += refinement.createdSplits;
-    refinement.newCoordinates = std::vector<double>();
-    refinement.newPointParents = std::vector<EdgeKey>();
-  }
-  status = runParallel(setup.threads, count,
-    [&](std::int64_t i)
-    {
-      const int p = members[i];
-      finalizeNewPoints(state.partitions[p], refinements[p], firstId[i]);
-    });
+  start = Clock::now();
+  status = numberNewPoints(iteration, members, state, result);
   result.seconds.post += secondsSince(start);
   return status;
 }
@@ -111,18 +187,19 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
 {
   const auto members = partitionsByColor(*setup.colorOfPartition, setup.numberOfColors);
   const int steps = setup.numberOfIterations * setup.numberOfColors;
+  result.partitionTaskSeconds.assign(
+    static_cast<std::size_t>(setup.numberOfIterations) * result.numberOfPartitions, 0.0);
   for (int iteration = 0; iteration < setup.numberOfIterations; ++iteration)
   {
-    // Interface flags are recomputed per iteration: the last one's splits made new interface
-    // points.
+    // Recomputed per iteration: the last one's splits made new interface points.
     const std::vector<char> interfaceVertex =
       findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
-    RefinementContext context;
-    context.coordinates = &state.coordinates;
-    context.interfaceVertex = &interfaceVertex;
-    context.squaredThreshold = setup.squaredThreshold;
-    context.templates = setup.templates;
-    std::vector<PartitionRefinement> refinements(state.partitions.size());
+    IterationContext context{ setup, options, RefinementContext(),
+      std::vector<PartitionRefinement>(state.partitions.size()) };
+    context.refinement.coordinates = &state.coordinates;
+    context.refinement.interfaceVertex = &interfaceVertex;
+    context.refinement.squaredThreshold = setup.squaredThreshold;
+    context.refinement.templates = setup.templates;
 
     for (int color = 0; color < setup.numberOfColors; ++color)
     {
@@ -131,8 +208,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
         result.aborted = true;
         return Status::success();
       }
-      Status status =
-        processColor(setup, members[color], color, context, refinements, state, result);
+      Status status = processColor(context, members[color], color, iteration, state, result);
       if (!status.ok())
       {
         return status;

@@ -8,6 +8,7 @@
 #include "PartitionGraph.h"
 #include "PartitionRefiner.h"
 #include "TemplateTable.h"
+#include "TetGenRefiner.h"
 
 #include <vector>
 
@@ -20,7 +21,7 @@ struct AdaptationState
   std::vector<PartitionMesh> partitions;
   std::vector<double> coordinates; // all global points
   PointId inputPointCount = 0;
-  std::vector<EdgeKey> newPointParents; // for global points from inputPointCount on
+  std::vector<PointSource> newPointSources; // for global points from inputPointCount on
 };
 
 struct ColorLoopSetup
@@ -30,8 +31,11 @@ struct ColorLoopSetup
   int numberOfColors = 0;
   int numberOfIterations = 1;
   int threads = 1;
-  double squaredThreshold = 0;
+  double squaredThreshold = 0; // template edge threshold, or interface length for Delaunay
   const TemplateTable* templates = nullptr;
+  RefinementMethod method = RefinementMethod::Template;
+  DelaunayParameters delaunay;
+  TetGenRunner runTetGen; // Delaunay: how partitions call TetGen
 };
 
 // Runs all iterations. Sets result.aborted (and returns success) when options.abortRequested

@@ -13,6 +13,11 @@ int resolveThreadCount(int requested)
   return requested > 0 ? requested : omp_get_max_threads();
 }
 
+int currentThreadIndex()
+{
+  return omp_get_thread_num();
+}
+
 Status runParallel(int threads, std::int64_t count, const std::function<void(std::int64_t)>& body)
 {
   bool failed = false;

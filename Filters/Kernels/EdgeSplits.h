@@ -6,6 +6,7 @@
 #include "TetMesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <unordered_map>
@@ -35,6 +36,20 @@ struct EdgeKeyHash
     x *= 0xBF58476D1CE4E5B9ull;
     x ^= x >> 29;
     return static_cast<std::size_t>(x);
+  }
+};
+
+// Where a new vertex lies: a weighted sum of up to four existing vertices (unused slots have
+// weight 0). An edge midpoint has two halves; a Delaunay Steiner point the barycentric
+// coordinates of the tet it was inserted in. Point data is interpolated with these weights.
+struct PointSource
+{
+  std::array<PointId, 4> points;
+  std::array<double, 4> weights;
+
+  static PointSource midpoint(const EdgeKey& edge)
+  {
+    return { { edge.low, edge.high, -1, -1 }, { 0.5, 0.5, 0, 0 } };
   }
 };
 

@@ -8,13 +8,13 @@ namespace cgmesh
 namespace
 {
 
-// Weights of every global point over input points. A new point is the midpoint of its parent
-// edge, whose end points have smaller ids, so one pass in id order suffices.
+// Weights of every global point over input points. A new point is a weighted sum of points with
+// smaller ids (it was inserted after them), so one pass in id order suffices.
 PointProvenance expandProvenance(
-  PointId inputPointCount, const std::vector<EdgeKey>& newPointParents)
+  PointId inputPointCount, const std::vector<PointSource>& newPointSources)
 {
   PointProvenance all;
-  const PointId total = inputPointCount + static_cast<PointId>(newPointParents.size());
+  const PointId total = inputPointCount + static_cast<PointId>(newPointSources.size());
   all.offsets.reserve(total + 1);
   all.offsets.push_back(0);
   for (PointId p = 0; p < inputPointCount; ++p)
@@ -24,14 +24,19 @@ PointProvenance expandProvenance(
     all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
   }
   std::vector<std::pair<PointId, double>> terms;
-  for (const EdgeKey& parents : newPointParents)
+  for (const PointSource& location : newPointSources)
   {
     terms.clear();
-    for (PointId parent : { parents.low, parents.high })
+    for (int slot = 0; slot < 4; ++slot)
     {
+      if (location.weights[slot] == 0)
+      {
+        continue;
+      }
+      const PointId parent = location.points[slot];
       for (std::int64_t k = all.offsets[parent]; k < all.offsets[parent + 1]; ++k)
       {
-        terms.emplace_back(all.sources[k], 0.5 * all.weights[k]);
+        terms.emplace_back(all.sources[k], location.weights[slot] * all.weights[k]);
       }
     }
     std::sort(terms.begin(), terms.end());
@@ -54,7 +59,7 @@ PointProvenance expandProvenance(
 
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
-  const std::vector<EdgeKey>& newPointParents, MergedMesh& merged)
+  const std::vector<PointSource>& newPointSources, MergedMesh& merged)
 {
   try
   {
@@ -81,7 +86,7 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
     merged = MergedMesh();
     merged.removedPoints = globalCount - outputCount;
 
-    const PointProvenance all = expandProvenance(inputPointCount, newPointParents);
+    const PointProvenance all = expandProvenance(inputPointCount, newPointSources);
     merged.mesh.coordinates.reserve(3 * outputCount);
     merged.provenance.offsets.reserve(outputCount + 1);
     merged.provenance.offsets.push_back(0);

@@ -34,10 +34,10 @@ struct MergedMesh
 };
 
 // `coordinates` holds all global points; points from `inputPointCount` on were created by
-// splitting the edges in `newPointParents` (one entry per created point, in id order).
+// refinement at the locations in `newPointSources` (one entry per created point, in id order).
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
-  const std::vector<EdgeKey>& newPointParents, MergedMesh& merged);
+  const std::vector<PointSource>& newPointSources, MergedMesh& merged);
 
 } // namespace cgmesh
 

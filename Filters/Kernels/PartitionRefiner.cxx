@@ -54,6 +54,7 @@ public:
     if (healed != this->Received.end())
     {
       vertex = healed->second;
+      this->Refinement.newInterfacePoints.insert(vertex);
       ++this->Refinement.healedSplits;
     }
     else
@@ -69,21 +70,34 @@ public:
 private:
   PointId createMidpoint(const EdgeKey& key)
   {
-    const double* pa = this->coordinatesOf(key.low);
-    const double* pb = this->coordinatesOf(key.high);
-    const PointId vertex = provisionalId(this->Refinement.newPointParents.size());
+    // Copies: the end points may themselves be new, and the vector below may reallocate.
+    double pa[3], pb[3];
+    std::copy_n(this->coordinatesOf(key.low), 3, pa);
+    std::copy_n(this->coordinatesOf(key.high), 3, pb);
+    const PointId vertex = provisionalId(this->Refinement.newPointSources.size());
     for (int axis = 0; axis < 3; ++axis)
     {
       this->Refinement.newCoordinates.push_back(0.5 * (pa[axis] + pb[axis]));
     }
-    this->Refinement.newPointParents.push_back(key);
+    this->Refinement.newPointSources.push_back(PointSource::midpoint(key));
     ++this->Refinement.createdSplits;
-    const auto& interfaceVertex = *this->Context.interfaceVertex;
-    if (interfaceVertex[key.low] && interfaceVertex[key.high])
+    if (this->onInterface(key.low) && this->onInterface(key.high))
     {
       this->Refinement.outbox.push_back(OutboxEntry{ key, vertex });
+      this->Refinement.newInterfacePoints.insert(vertex);
     }
     return vertex;
+  }
+
+  // Whether a vertex may be shared with another partition (so may the edges between two such).
+  bool onInterface(PointId id) const
+  {
+    const auto& flags = *this->Context.interfaceVertex;
+    if (id >= 0 && id < static_cast<PointId>(flags.size()))
+    {
+      return flags[id] != 0;
+    }
+    return this->Refinement.newInterfacePoints.count(id) != 0;
   }
 
   const RefinementContext& Context;
@@ -100,7 +114,7 @@ std::array<int, 4> cornerRanks(const Tet& tet)
     ranks[i] = 0;
     for (int j = 0; j < 4; ++j)
     {
-      ranks[i] += tet[j] < tet[i];
+      ranks[i] += vertexRank(tet[j]) < vertexRank(tet[i]);
     }
   }
   return ranks;
@@ -154,7 +168,7 @@ std::vector<char> findInterfaceVertices(
 }
 
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, PartitionRefinement& refinement)
+  const EdgeMidpointMap& received, PartitionRefinement& refinement, const EdgeFilter& filter)
 {
   try
   {
@@ -174,7 +188,7 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       {
         const PointId a = tet[TetEdgeCorners[e][0]];
         const PointId b = tet[TetEdgeCorners[e][1]];
-        if (session.isLong(a, b))
+        if (session.isLong(a, b) && filter.allows(EdgeKey::of(a, b)))
         {
           splitMask |= 1 << e;
           vertices[4 + e] = session.midpointOf(a, b);
@@ -227,7 +241,19 @@ void finalizeNewPoints(
   }
   for (OutboxEntry& entry : refinement.outbox)
   {
+    entry.edge = EdgeKey::of(globalId(entry.edge.low), globalId(entry.edge.high));
     entry.vertex = globalId(entry.vertex);
+  }
+  refinement.newInterfacePoints.clear();
+  for (PointSource& source : refinement.newPointSources)
+  {
+    for (int slot = 0; slot < 4; ++slot)
+    {
+      if (source.weights[slot] != 0)
+      {
+        source.points[slot] = globalId(source.points[slot]);
+      }
+    }
   }
 }
 

@@ -9,6 +9,7 @@
 #include "TemplateTable.h"
 #include "TetMesh.h"
 
+#include <unordered_set>
 #include <vector>
 
 namespace cgmesh
@@ -31,13 +32,31 @@ struct RefinementContext
   const TemplateTable* templates = nullptr;
 };
 
+using EdgeSet = std::unordered_set<EdgeKey, EdgeKeyHash>;
+
+// Restricts which long edges a refinement pass may split: all (no set), only the listed ones, or
+// all but the listed ones.
+struct EdgeFilter
+{
+  const EdgeSet* edges = nullptr;
+  bool onlyListed = true;
+
+  bool allows(const EdgeKey& edge) const
+  {
+    return !edges || (edges->count(edge) != 0) == onlyListed;
+  }
+};
+
 // Vertices a partition created. Until the colour is finished they carry provisional ids
 // -(k + 1) for the k-th new vertex; finalizeNewPoints() turns them into global ids.
 struct PartitionRefinement
 {
-  std::vector<double> newCoordinates;   // xyz per new vertex
-  std::vector<EdgeKey> newPointParents; // the edge each new vertex splits
+  std::vector<double> newCoordinates;       // xyz per new vertex
+  std::vector<PointSource> newPointSources; // where each new vertex lies
   Outbox outbox;
+  // Vertices this partition made or received during the iteration that lie on an interface
+  // (older ones are flagged in RefinementContext::interfaceVertex).
+  std::unordered_set<PointId> newInterfacePoints;
   std::int64_t healedSplits = 0;  // splits taken from neighbours' outboxes
   std::int64_t createdSplits = 0; // splits this partition made itself
 };
@@ -50,10 +69,21 @@ std::vector<char> findInterfaceVertices(
 // Refines `partition` in place. The tets' corners are global ids; the result may reference
 // provisional ids (see above).
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, PartitionRefinement& refinement);
+  const EdgeMidpointMap& received, PartitionRefinement& refinement,
+  const EdgeFilter& filter = EdgeFilter());
 
-// Rewrites provisional ids of the partition's tets and outbox into global ids starting at
-// `firstGlobalId`.
+// The position of a vertex in the global order that decides face diagonals. Provisional ids come
+// after every global id, in creation order: exactly the order of the global ids they will get,
+// since ids are handed out colour by colour. So a partition and a neighbour that sees the same
+// vertex with its final id rank it alike.
+inline std::uint64_t vertexRank(PointId id)
+{
+  return id >= 0 ? static_cast<std::uint64_t>(id)
+                 : (std::uint64_t(1) << 62) + static_cast<std::uint64_t>(-id - 1);
+}
+
+// Rewrites provisional ids of the partition's tets, outbox and new point sources into global ids
+// starting at `firstGlobalId`.
 void finalizeNewPoints(
   PartitionMesh& partition, PartitionRefinement& refinement, PointId firstGlobalId);
 

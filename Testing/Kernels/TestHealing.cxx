@@ -18,7 +18,7 @@ struct ManualRun
   std::vector<PartitionMesh> partitions;
   std::vector<PartitionRefinement> refinements;
   std::vector<double> coordinates;
-  std::vector<EdgeKey> newPointParents;
+  std::vector<PointSource> newPointSources;
   PointId inputPointCount = 0;
   TemplateTable templates;
 };
@@ -43,11 +43,11 @@ void processInOrder(ManualRun& run, const std::vector<int>& order, double thresh
     CHECK(refinePartition(run.partitions[p], context, received, run.refinements[p]).ok());
     const PointId first = static_cast<PointId>(run.coordinates.size() / 3);
     auto& refinement = run.refinements[p];
+    finalizeNewPoints(run.partitions[p], refinement, first);
     run.coordinates.insert(
       run.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
-    run.newPointParents.insert(run.newPointParents.end(), refinement.newPointParents.begin(),
-      refinement.newPointParents.end());
-    finalizeNewPoints(run.partitions[p], refinement, first);
+    run.newPointSources.insert(run.newPointSources.end(), refinement.newPointSources.begin(),
+      refinement.newPointSources.end());
     processed.push_back(&refinement.outbox);
   }
 }
@@ -56,7 +56,7 @@ MergedMesh merge(const ManualRun& run)
 {
   MergedMesh merged;
   CHECK(mergePartitions(
-    run.partitions, run.coordinates, run.inputPointCount, run.newPointParents, merged)
+    run.partitions, run.coordinates, run.inputPointCount, run.newPointSources, merged)
           .ok());
   return merged;
 }

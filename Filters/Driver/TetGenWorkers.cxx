@@ -1,0 +1,291 @@
+#include "TetGenWorkers.h"
+
+#define TETLIBRARY
+#include <tetgen.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdint>
+#include <cstring>
+#include <new>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace cgmesh
+{
+namespace
+{
+
+// Blocking full-buffer transfers on a stream socket. MSG_NOSIGNAL: a dead peer must not raise
+// SIGPIPE in the host process.
+bool sendAll(int socket, const void* data, std::size_t size)
+{
+  const char* bytes = static_cast<const char*>(data);
+  while (size > 0)
+  {
+    const ssize_t sent = ::send(socket, bytes, size, MSG_NOSIGNAL);
+    if (sent < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (sent <= 0)
+    {
+      return false;
+    }
+    bytes += sent;
+    size -= static_cast<std::size_t>(sent);
+  }
+  return true;
+}
+
+bool receiveAll(int socket, void* data, std::size_t size)
+{
+  char* bytes = static_cast<char*>(data);
+  while (size > 0)
+  {
+    const ssize_t received = ::recv(socket, bytes, size, 0);
+    if (received < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (received <= 0)
+    {
+      return false;
+    }
+    bytes += received;
+    size -= static_cast<std::size_t>(received);
+  }
+  return true;
+}
+
+// A message is a sequence of length-prefixed arrays.
+template <typename T>
+bool sendArray(int socket, const T* values, std::int64_t count)
+{
+  return sendAll(socket, &count, sizeof(count)) &&
+    (count == 0 || sendAll(socket, values, sizeof(T) * static_cast<std::size_t>(count)));
+}
+
+template <typename T>
+bool receiveArray(int socket, T*& values, std::int64_t& count)
+{
+  values = nullptr;
+  if (!receiveAll(socket, &count, sizeof(count)) || count < 0 || count > (std::int64_t(1) << 40))
+  {
+    return false;
+  }
+  if (count == 0)
+  {
+    return true;
+  }
+  values = new T[static_cast<std::size_t>(count)];
+  return receiveAll(socket, values, sizeof(T) * static_cast<std::size_t>(count));
+}
+
+bool sendMesh(int socket, const tetgenio& io, bool withFaces)
+{
+  const int header[4] = { io.numberofcorners, io.numberoftetrahedronattributes, io.firstnumber,
+    withFaces ? 1 : 0 };
+  return sendAll(socket, header, sizeof(header)) &&
+    sendArray(socket, io.pointlist, 3 * static_cast<std::int64_t>(io.numberofpoints)) &&
+    sendArray(
+      socket, io.tetrahedronlist, std::int64_t(io.numberofcorners) * io.numberoftetrahedra) &&
+    sendArray(socket, io.tetrahedronattributelist,
+      std::int64_t(io.numberoftetrahedronattributes) * io.numberoftetrahedra) &&
+    (!withFaces ||
+      (sendArray(socket, io.trifacelist, 3 * static_cast<std::int64_t>(io.numberoftrifaces)) &&
+        sendArray(socket, io.trifacemarkerlist, static_cast<std::int64_t>(io.numberoftrifaces))));
+}
+
+bool receiveMesh(int socket, tetgenio& io)
+{
+  int header[4];
+  std::int64_t count = 0;
+  if (!receiveAll(socket, header, sizeof(header)))
+  {
+    return false;
+  }
+  io.numberofcorners = header[0];
+  io.numberoftetrahedronattributes = header[1];
+  io.firstnumber = header[2];
+  if (!receiveArray(socket, io.pointlist, count))
+  {
+    return false;
+  }
+  io.numberofpoints = static_cast<int>(count / 3);
+  if (!receiveArray(socket, io.tetrahedronlist, count) || io.numberofcorners <= 0)
+  {
+    return false;
+  }
+  io.numberoftetrahedra = static_cast<int>(count / io.numberofcorners);
+  if (!receiveArray(socket, io.tetrahedronattributelist, count))
+  {
+    return false;
+  }
+  if (header[3] == 0)
+  {
+    return true;
+  }
+  if (!receiveArray(socket, io.trifacelist, count))
+  {
+    return false;
+  }
+  io.numberoftrifaces = static_cast<int>(count / 3);
+  return receiveArray(socket, io.trifacemarkerlist, count);
+}
+
+// The worker's life: read a request, run TetGen, answer; leave on end of input.
+[[noreturn]] void serveRequests(int socket)
+{
+  for (;;)
+  {
+    char* switches = nullptr;
+    std::int64_t length = 0;
+    if (!receiveArray(socket, switches, length) || length == 0)
+    {
+      _exit(0);
+    }
+    tetgenio in, out;
+    bool received = receiveMesh(socket, in);
+    std::string failure;
+    if (!received)
+    {
+      _exit(1);
+    }
+    try
+    {
+      tetgenbehavior behavior;
+      behavior.parse_commandline(switches);
+      tetrahedralize(&behavior, &in, &out);
+    }
+    catch (int code)
+    {
+      failure = "TetGen stopped with error code " + std::to_string(code);
+    }
+    catch (const std::bad_alloc&)
+    {
+      failure = "TetGen ran out of memory";
+    }
+    delete[] switches;
+    const std::int32_t ok = failure.empty() ? 1 : 0;
+    const bool answered = sendAll(socket, &ok, sizeof(ok)) &&
+      (ok ? sendMesh(socket, out, false)
+          : sendArray(socket, failure.data(), static_cast<std::int64_t>(failure.size())));
+    if (!answered)
+    {
+      _exit(1);
+    }
+  }
+}
+
+} // namespace
+
+TetGenWorkerPool::TetGenWorkerPool(int workers)
+  : Workers(static_cast<std::size_t>(workers > 0 ? workers : 1))
+{
+  for (Worker& worker : this->Workers)
+  {
+    this->start(worker);
+  }
+}
+
+TetGenWorkerPool::~TetGenWorkerPool()
+{
+  for (Worker& worker : this->Workers)
+  {
+    this->stop(worker, false);
+  }
+}
+
+bool TetGenWorkerPool::start(Worker& worker)
+{
+  std::lock_guard<std::mutex> lock(this->Forking);
+  int sockets[2];
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sockets) != 0)
+  {
+    return false;
+  }
+  const pid_t process = ::fork();
+  if (process < 0)
+  {
+    ::close(sockets[0]);
+    ::close(sockets[1]);
+    return false;
+  }
+  if (process == 0)
+  {
+    // Holding another worker's socket open would keep that worker from seeing end of input.
+    for (const Worker& other : this->Workers)
+    {
+      if (other.socket >= 0)
+      {
+        ::close(other.socket);
+      }
+    }
+    ::close(sockets[0]);
+    serveRequests(sockets[1]);
+  }
+  ::close(sockets[1]);
+  worker.process = process;
+  worker.socket = sockets[0];
+  return true;
+}
+
+void TetGenWorkerPool::stop(Worker& worker, bool kill)
+{
+  if (kill && worker.process > 0)
+  {
+    ::kill(worker.process, SIGKILL);
+  }
+  if (worker.socket >= 0)
+  {
+    ::close(worker.socket); // the worker reads end of input and leaves
+    worker.socket = -1;
+  }
+  if (worker.process > 0)
+  {
+    int status = 0;
+    while (::waitpid(worker.process, &status, 0) < 0 && errno == EINTR)
+    {
+    }
+    worker.process = -1;
+  }
+}
+
+std::string TetGenWorkerPool::run(
+  int index, const tetgenio& in, const std::string& switches, tetgenio& out)
+{
+  Worker& worker = this->Workers.at(static_cast<std::size_t>(index));
+  if (worker.socket < 0 && !this->start(worker))
+  {
+    return "could not start a TetGen worker process";
+  }
+  std::int32_t ok = 0;
+  const bool exchanged =
+    sendArray(worker.socket, switches.c_str(), static_cast<std::int64_t>(switches.size() + 1)) &&
+    sendMesh(worker.socket, in, true) && receiveAll(worker.socket, &ok, sizeof(ok));
+  if (exchanged && ok)
+  {
+    if (receiveMesh(worker.socket, out))
+    {
+      return std::string();
+    }
+  }
+  else if (exchanged)
+  {
+    char* message = nullptr;
+    std::int64_t length = 0;
+    if (receiveArray(worker.socket, message, length))
+    {
+      std::string failure(message, static_cast<std::size_t>(length));
+      delete[] message;
+      return failure;
+    }
+  }
+  // The worker died (an assertion in TetGen aborts it) or the exchange broke: replace it.
+  this->stop(worker, true);
+  return "the TetGen process stopped unexpectedly (TetGen aborted on this partition)";
+}
+
+} // namespace cgmesh

@@ -1,0 +1,51 @@
+// TetGen runs in worker processes, one per thread of the colour loop.
+//
+// Two facts about TetGen 1.5 as packaged make in-process calls unsafe for a long-lived host such
+// as pvserver: every tetrahedralize() call rewrites process-wide state (the predicates' error
+// bounds and bounding-box filter, the static mesh-navigation tables), so concurrent calls race;
+// and the library is built with assertions, which abort the whole process on some degenerate
+// inputs (seen with -Y and a volume bound on valid partitions). A worker process has TetGen's
+// globals to itself, and when it dies the call simply fails: the partition falls back to
+// templates and the worker is replaced.
+#ifndef cgmesh_TetGenWorkers_h
+#define cgmesh_TetGenWorkers_h
+
+#include <mutex>
+#include <string>
+#include <sys/types.h>
+#include <vector>
+
+class tetgenio;
+
+namespace cgmesh
+{
+
+class TetGenWorkerPool
+{
+public:
+  // Starts `workers` processes (forked now, from the calling thread).
+  explicit TetGenWorkerPool(int workers);
+  ~TetGenWorkerPool();
+  TetGenWorkerPool(const TetGenWorkerPool&) = delete;
+  TetGenWorkerPool& operator=(const TetGenWorkerPool&) = delete;
+
+  // Runs TetGen with `switches` on `in` in worker `worker` (0 <= worker < workers; one caller per
+  // worker at a time) and fills `out`. Returns an empty string on success, else why it failed.
+  std::string run(int worker, const tetgenio& in, const std::string& switches, tetgenio& out);
+
+private:
+  struct Worker
+  {
+    pid_t process = -1;
+    int socket = -1;
+  };
+  bool start(Worker& worker);
+  void stop(Worker& worker, bool kill);
+
+  std::vector<Worker> Workers;
+  std::mutex Forking; // a new worker must close every other worker's socket it inherits
+};
+
+} // namespace cgmesh
+
+#endif
