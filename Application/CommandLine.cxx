@@ -1,10 +1,13 @@
 #include "CommandLine.h"
 
+#include "vtkCoarseGrainedMeshAdaptation.h"
+
 #include <cerrno>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <set>
 
 namespace cgmesh
 {
@@ -53,9 +56,14 @@ Status parseDouble(const std::string& text, const std::string& what, double mini
 namespace
 {
 
-// Splits arguments into positionals and "--name value" / "--name=value" options.
+// Options that take no value; they are stored with an empty value.
+const std::set<std::string> RefineFlags = { "--partition-by-region" };
+
+// Splits arguments into positionals, "--name value" / "--name=value" options and the value-less
+// `flags`.
 Status splitArguments(const std::vector<std::string>& arguments,
-  std::vector<std::string>& positionals, std::map<std::string, std::string>& options)
+  std::vector<std::string>& positionals, std::map<std::string, std::string>& options,
+  const std::set<std::string>& flags = {})
 {
   for (size_t index = 0; index < arguments.size(); ++index)
   {
@@ -68,7 +76,12 @@ Status splitArguments(const std::vector<std::string>& arguments,
     std::string name = argument;
     std::string value;
     const size_t equals = argument.find('=');
-    if (equals != std::string::npos)
+    if (flags.count(argument.substr(0, equals)))
+    {
+      if (equals != std::string::npos)
+        return Status::failure("option " + argument.substr(0, equals) + " takes no value");
+    }
+    else if (equals != std::string::npos)
     {
       name = argument.substr(0, equals);
       value = argument.substr(equals + 1);
@@ -100,6 +113,39 @@ Status checkPositionalCount(
   return Status::success();
 }
 
+Status parseColoringName(const std::string& text, std::string& coloring)
+{
+  if (vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(text.c_str()) >= 0)
+  {
+    coloring = text;
+    return Status::success();
+  }
+  std::string knownNames;
+  for (int algorithm = vtkCoarseGrainedMeshAdaptation::GREEDY;
+       algorithm <= vtkCoarseGrainedMeshAdaptation::RECOLORING; ++algorithm)
+  {
+    knownNames += std::string(knownNames.empty() ? "" : ", ") +
+      vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmToName(algorithm);
+  }
+  return Status::failure(
+    "unknown colouring '" + text + "' for --coloring (use " + knownNames + ")");
+}
+
+// Options that only make sense together, or that exclude each other.
+Status checkRefineOptionCombinations(const std::map<std::string, std::string>& options)
+{
+  if (options.count("--max-edge-length") && options.count("--edge-length-factor"))
+    return Status::failure("give either --max-edge-length or --edge-length-factor, not both");
+  const bool byRegion = options.count("--partition-by-region") > 0;
+  if (byRegion && options.count("--partitions"))
+    return Status::failure("give either --partitions or --partition-by-region, not both");
+  if (options.count("--partitions-per-region") && !byRegion)
+    return Status::failure("--partitions-per-region needs --partition-by-region");
+  if (byRegion && !options.count("--region-array"))
+    return Status::failure("--partition-by-region needs --region-array NAME");
+  return Status::success();
+}
+
 Status applyRefineOption(const std::string& name, const std::string& value, RefineArguments& parsed)
 {
   if (name == "--partitions")
@@ -117,6 +163,15 @@ Status applyRefineOption(const std::string& name, const std::string& value, Refi
     parsed.regionArrayName = value;
     return Status::success();
   }
+  if (name == "--coloring")
+    return parseColoringName(value, parsed.coloring);
+  if (name == "--partition-by-region")
+  {
+    parsed.partitionByRegion = true;
+    return Status::success();
+  }
+  if (name == "--partitions-per-region")
+    return parseInt(value, name, 1, INT_MAX, parsed.partitionsPerRegion);
   if (name == "--stats")
   {
     parsed.statsFile = value;
@@ -131,7 +186,7 @@ Status parseRefineArguments(const std::vector<std::string>& arguments, RefineArg
 {
   std::vector<std::string> positionals;
   std::map<std::string, std::string> options;
-  Status status = splitArguments(arguments, positionals, options);
+  Status status = splitArguments(arguments, positionals, options, RefineFlags);
   if (!status.ok())
     return status;
   status = checkPositionalCount(positionals, 2, "IN and OUT");
@@ -139,10 +194,9 @@ Status parseRefineArguments(const std::vector<std::string>& arguments, RefineArg
     return status;
   parsed.inputFile = positionals[0];
   parsed.outputFile = positionals[1];
-  if (options.count("--max-edge-length") && options.count("--edge-length-factor"))
-  {
-    return Status::failure("give either --max-edge-length or --edge-length-factor, not both");
-  }
+  status = checkRefineOptionCombinations(options);
+  if (!status.ok())
+    return status;
   for (const auto& option : options)
   {
     status = applyRefineOption(option.first, option.second, parsed);

@@ -21,7 +21,10 @@ struct RefineArguments
   double edgeLengthFactor = 0.5; // fraction of the input's mean edge length
   int numberOfThreads = 0;       // 0 = all cores
   std::string regionArrayName;
-  std::string statsFile; // JSON statistics, written when not empty
+  std::string coloring = "greedy-lu"; // a vtkCoarseGrainedMeshAdaptation colouring name
+  bool partitionByRegion = false;     // cut along the regions of regionArrayName
+  int partitionsPerRegion = 1;        // with partitionByRegion
+  std::string statsFile;              // JSON statistics, written when not empty
 };
 
 struct GenerateArguments

@@ -23,20 +23,32 @@ namespace
 
 void printRefineUsage()
 {
-  std::cout << "usage: cgmesh refine IN OUT [--partitions N] [--iterations K]\n"
-               "                     [--max-edge-length L | --edge-length-factor F] [--threads T]\n"
-               "                     [--region-array NAME] [--stats FILE.json]\n"
-               "\n"
-               "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
-               "\n"
-               "  --partitions N          number of METIS partitions (default 1024)\n"
-               "  --iterations K          refinement passes (default 1)\n"
-               "  --max-edge-length L     split edges longer than L (absolute length)\n"
-               "  --edge-length-factor F  split edges longer than F x mean input edge length "
-               "(default 0.5)\n"
-               "  --threads T             OpenMP threads, 0 = all cores (default 0)\n"
-               "  --region-array NAME     cell array with material/region ids\n"
-               "  --stats FILE.json       write counts and phase timings as JSON\n";
+  std::cout
+    << "usage: cgmesh refine IN OUT [--partitions N | --partition-by-region\n"
+       "                     [--partitions-per-region N]] [--iterations K]\n"
+       "                     [--max-edge-length L | --edge-length-factor F] [--threads T]\n"
+       "                     [--region-array NAME] [--coloring NAME] [--stats FILE.json]\n"
+       "\n"
+       "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
+       "\n"
+       "  --partitions N          number of METIS partitions (default 1024)\n"
+       "  --partition-by-region   cut along the regions of --region-array instead, each region\n"
+       "                          on its own: no partition holds two regions\n"
+       "  --partitions-per-region N\n"
+       "                          with --partition-by-region: METIS partitions per region\n"
+       "                          (default 1)\n"
+       "  --iterations K          refinement passes (default 1)\n"
+       "  --max-edge-length L     split edges longer than L (absolute length)\n"
+       "  --edge-length-factor F  split edges longer than F x mean input edge length "
+       "(default 0.5)\n"
+       "  --threads T             OpenMP threads, 0 = all cores (default 0)\n"
+       "  --region-array NAME     cell array with material/region ids\n"
+       "  --coloring NAME         colouring of the partition graph (default greedy-lu):\n"
+       "                            greedy      first fit, serial, unbalanced\n"
+       "                            greedy-lu   least-used permissible colour, serial, balanced\n"
+       "                            iterative   speculative parallel colouring, conflict rounds\n"
+       "                            recoloring  parallel rebalancing of an initial colouring\n"
+       "  --stats FILE.json       write counts, colour populations and phase timings as JSON\n";
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start)
@@ -53,6 +65,11 @@ void configureFilter(const RefineArguments& arguments, vtkCoarseGrainedMeshAdapt
   filter->SetNumberOfThreads(arguments.numberOfThreads);
   filter->SetRegionArrayName(
     arguments.regionArrayName.empty() ? nullptr : arguments.regionArrayName.c_str());
+  // The parser accepted only names the filter knows.
+  filter->SetColoringAlgorithm(
+    vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(arguments.coloring.c_str()));
+  filter->SetPartitionByRegion(arguments.partitionByRegion);
+  filter->SetPartitionsPerRegion(arguments.partitionsPerRegion);
 }
 
 // Runs the filter on `input`; on success `output` holds the refined grid.
@@ -136,6 +153,8 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
   statistics.inputPoints = input->GetNumberOfPoints();
   statistics.inputCells = input->GetNumberOfCells();
   statistics.numberOfIterations = arguments.numberOfIterations;
+  statistics.partitionByRegion = arguments.partitionByRegion;
+  statistics.partitionsPerRegion = arguments.partitionsPerRegion;
   collectFilterStatistics(output, statistics);
   removeRunDependentFieldData(output);
 

@@ -2,6 +2,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <fstream>
@@ -24,6 +25,34 @@ double fieldValue(vtkFieldData* fieldData, const char* name)
 {
   vtkDataArray* array = fieldData->GetArray(name);
   return (array && array->GetNumberOfTuples() > 0) ? array->GetComponent(0, 0) : 0.0;
+}
+
+std::vector<std::int64_t> fieldValues(vtkFieldData* fieldData, const char* name)
+{
+  std::vector<std::int64_t> values;
+  vtkDataArray* array = fieldData->GetArray(name);
+  for (vtkIdType tuple = 0; array && tuple < array->GetNumberOfTuples(); ++tuple)
+  {
+    values.push_back(static_cast<std::int64_t>(array->GetComponent(tuple, 0)));
+  }
+  return values;
+}
+
+std::string fieldString(vtkFieldData* fieldData, const char* name)
+{
+  auto* array = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray(name));
+  return (array && array->GetNumberOfValues() > 0) ? array->GetValue(0) : std::string();
+}
+
+// "a b c" for the table, "[a, b, c]" for JSON.
+std::string joinValues(const std::vector<std::int64_t>& values, const char* separator)
+{
+  std::ostringstream joined;
+  for (size_t index = 0; index < values.size(); ++index)
+  {
+    joined << (index ? separator : "") << values[index];
+  }
+  return joined.str();
 }
 
 std::string jsonString(const std::string& text)
@@ -55,6 +84,10 @@ void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& stat
   statistics.numberOfPartitions = static_cast<int>(fieldValue(fieldData, "NumberOfPartitions"));
   statistics.numberOfThreads = static_cast<int>(fieldValue(fieldData, "NumberOfThreads"));
   statistics.edgeLengthThreshold = fieldValue(fieldData, "EdgeLengthThreshold");
+  statistics.coloring = fieldString(fieldData, "ColoringAlgorithm");
+  statistics.partitionsPerColor = fieldValues(fieldData, "PartitionsPerColor");
+  statistics.cellsPerColor = fieldValues(fieldData, "CellsPerColor");
+  statistics.colorBalance = fieldValue(fieldData, "ColorBalance");
   for (const auto& phase : FilterPhases)
   {
     statistics.seconds.emplace_back(phase.first, fieldValue(fieldData, phase.second));
@@ -67,8 +100,18 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
          << std::setw(24) << "input cells" << statistics.inputCells << "\n"
          << std::setw(24) << "output points" << statistics.outputPoints << "\n"
          << std::setw(24) << "output cells" << statistics.outputCells << "\n"
-         << std::setw(24) << "partitions" << statistics.numberOfPartitions << "\n"
+         << std::setw(24) << "partitions" << statistics.numberOfPartitions
+         << (statistics.partitionByRegion
+                ? " (by region, " + std::to_string(statistics.partitionsPerRegion) + " per region)"
+                : std::string())
+         << "\n"
+         << std::setw(24) << "coloring" << statistics.coloring << "\n"
          << std::setw(24) << "colors" << statistics.numberOfColors << "\n"
+         << std::setw(24) << "partitions per color"
+         << joinValues(statistics.partitionsPerColor, " ") << "\n"
+         << std::setw(24) << "cells per color" << joinValues(statistics.cellsPerColor, " ") << "\n"
+         << std::setw(24) << "color balance" << std::setprecision(4) << statistics.colorBalance
+         << "\n"
          << std::setw(24) << "threads" << statistics.numberOfThreads << "\n"
          << std::setw(24) << "iterations" << statistics.numberOfIterations << "\n"
          << std::setw(24) << "edge length threshold" << std::setprecision(6)
@@ -99,6 +142,12 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "},\n"
        << "  \"colors\": " << statistics.numberOfColors << ",\n"
        << "  \"partitions\": " << statistics.numberOfPartitions << ",\n"
+       << "  \"partitionByRegion\": " << (statistics.partitionByRegion ? "true" : "false") << ",\n"
+       << "  \"partitionsPerRegion\": " << statistics.partitionsPerRegion << ",\n"
+       << "  \"coloring\": " << jsonString(statistics.coloring) << ",\n"
+       << "  \"partitionsPerColor\": [" << joinValues(statistics.partitionsPerColor, ", ") << "],\n"
+       << "  \"cellsPerColor\": [" << joinValues(statistics.cellsPerColor, ", ") << "],\n"
+       << "  \"colorBalance\": " << statistics.colorBalance << ",\n"
        << "  \"threads\": " << statistics.numberOfThreads << ",\n"
        << "  \"iterations\": " << statistics.numberOfIterations << ",\n"
        << "  \"edgeLengthThreshold\": " << statistics.edgeLengthThreshold << ",\n"

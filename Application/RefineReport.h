@@ -28,12 +28,18 @@ struct RefineStatistics
   int numberOfThreads = 0;
   int numberOfIterations = 0;
   double edgeLengthThreshold = 0;
+  bool partitionByRegion = false;
+  int partitionsPerRegion = 1;
+  std::string coloring;
+  std::vector<std::int64_t> partitionsPerColor; // colour populations, one entry per colour
+  std::vector<std::int64_t> cellsPerColor;
+  double colorBalance = 0; // largest colour over the mean, in partitions
   // (phase, seconds) in pipeline order: the filter's phases, then reading and writing files.
   std::vector<std::pair<std::string, double>> seconds;
 };
 
-// Fills counts, colours, partitions, threads, threshold and phase seconds from the filter output's
-// field data (see vtkCoarseGrainedMeshAdaptation).
+// Fills counts, colours, partitions, threads, threshold, colouring, colour populations and phase
+// seconds from the filter output's field data (see vtkCoarseGrainedMeshAdaptation).
 void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& statistics);
 
 void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stream);

@@ -11,6 +11,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -20,6 +21,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
 #include "vtkTetra.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -41,6 +43,10 @@ double secondsSince(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Names of vtkCoarseGrainedMeshAdaptation::ColoringAlgorithms, indexed by value; they are the
+// names the driver's colouring registry knows.
+const char* const ColoringAlgorithmNames[] = { "greedy", "greedy-lu", "iterative", "recoloring" };
+
 // Share of the progress bar given to adaptMesh; the rest covers array transfer and quality.
 constexpr double AdaptationProgressShare = 0.85;
 
@@ -59,6 +65,28 @@ void addFieldValue(vtkFieldData* fieldData, const char* name, int value)
   array->SetName(name);
   array->SetNumberOfValues(1);
   array->SetValue(0, value);
+  fieldData->AddArray(array);
+}
+
+void addFieldString(vtkFieldData* fieldData, const char* name, const char* value)
+{
+  vtkNew<vtkStringArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fieldData->AddArray(array);
+}
+
+// One tuple per colour.
+void addColorPopulation(
+  vtkFieldData* fieldData, const char* name, const std::vector<std::int64_t>& countPerColor)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(countPerColor.size()));
+  for (size_t color = 0; color < countPerColor.size(); ++color)
+  {
+    array->SetValue(static_cast<vtkIdType>(color), static_cast<vtkIdType>(countPerColor[color]));
+  }
   fieldData->AddArray(array);
 }
 
@@ -156,13 +184,17 @@ double addQualityArrays(vtkUnstructuredGrid* output, int threads)
   return secondsSince(start);
 }
 
-void addFieldData(const cgmesh::AdaptationResult& result, double qualitySeconds,
-  double totalSeconds, vtkFieldData* fieldData)
+void addFieldData(const cgmesh::AdaptationResult& result, const char* coloringName,
+  double qualitySeconds, double totalSeconds, vtkFieldData* fieldData)
 {
   addFieldValue(fieldData, "NumberOfColors", result.numberOfColors);
   addFieldValue(fieldData, "NumberOfPartitions", result.numberOfPartitions);
   addFieldValue(fieldData, "NumberOfThreads", result.numberOfThreads);
   addFieldValue(fieldData, "EdgeLengthThreshold", result.edgeLengthThreshold);
+  addFieldString(fieldData, "ColoringAlgorithm", coloringName);
+  addColorPopulation(fieldData, "PartitionsPerColor", result.partitionsPerColor);
+  addColorPopulation(fieldData, "CellsPerColor", result.cellsPerColor);
+  addFieldValue(fieldData, "ColorBalance", result.colorBalance);
   const cgmesh::PhaseSeconds& seconds = result.seconds;
   addFieldValue(fieldData, "PartitionSeconds", seconds.partition);
   addFieldValue(fieldData, "GraphSeconds", seconds.graph);
@@ -183,6 +215,9 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter)
   options.maximumEdgeLength = filter->GetMaximumEdgeLength();
   options.edgeLengthFactor = filter->GetEdgeLengthFactor();
   options.numberOfThreads = filter->GetNumberOfThreads();
+  options.coloring = filter->GetColoringAlgorithmName();
+  options.partitionByRegion = filter->GetPartitionByRegion();
+  options.partitionsPerRegion = filter->GetPartitionsPerRegion();
   // The driver calls both hooks on the calling thread only.
   options.progress = [filter](double fraction, const char*)
   {
@@ -215,6 +250,9 @@ vtkCoarseGrainedMeshAdaptation::vtkCoarseGrainedMeshAdaptation()
   , EdgeLengthFactor(0.5)
   , NumberOfThreads(0)
   , RegionArrayName(nullptr)
+  , ColoringAlgorithm(GREEDY_LEAST_USED)
+  , PartitionByRegion(false)
+  , PartitionsPerRegion(1)
 {
 }
 
@@ -222,6 +260,26 @@ vtkCoarseGrainedMeshAdaptation::vtkCoarseGrainedMeshAdaptation()
 vtkCoarseGrainedMeshAdaptation::~vtkCoarseGrainedMeshAdaptation()
 {
   this->SetRegionArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmToName(int algorithm)
+{
+  return (algorithm >= GREEDY && algorithm <= RECOLORING) ? ColoringAlgorithmNames[algorithm]
+                                                          : nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(const char* name)
+{
+  for (int algorithm = GREEDY; name && algorithm <= RECOLORING; ++algorithm)
+  {
+    if (std::strcmp(name, ColoringAlgorithmNames[algorithm]) == 0)
+    {
+      return algorithm;
+    }
+  }
+  return -1;
 }
 
 //------------------------------------------------------------------------------
@@ -249,6 +307,12 @@ bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
     vtkErrorMacro(<< "The input must hold only linear tetrahedra, but " << nonTetrahedra
                   << " of its " << input->GetNumberOfCells()
                   << " cells are of other types. Apply ParaView's Tetrahedralize filter first.");
+    return false;
+  }
+  if (this->PartitionByRegion && this->ResolveRegionArrayName(input).empty())
+  {
+    vtkErrorMacro(<< "PartitionByRegion needs a region array: set RegionArrayName to the cell "
+                     "array of material/region ids to cut along.");
     return false;
   }
   return true;
@@ -301,7 +365,8 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   fillOutput(input, result, output);
   this->UpdateProgress(0.9);
   const double qualitySeconds = addQualityArrays(output, result.numberOfThreads);
-  addFieldData(result, qualitySeconds, secondsSince(start), output->GetFieldData());
+  addFieldData(result, this->GetColoringAlgorithmName(), qualitySeconds, secondsSince(start),
+    output->GetFieldData());
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -317,4 +382,8 @@ void vtkCoarseGrainedMeshAdaptation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)")
      << "\n";
+  os << indent << "ColoringAlgorithm: " << this->ColoringAlgorithm << " ("
+     << this->GetColoringAlgorithmName() << ")\n";
+  os << indent << "PartitionByRegion: " << (this->PartitionByRegion ? "on" : "off") << "\n";
+  os << indent << "PartitionsPerRegion: " << this->PartitionsPerRegion << "\n";
 }

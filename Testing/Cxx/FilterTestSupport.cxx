@@ -14,12 +14,16 @@
 #include "vtkIdTypeArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <numeric>
+#include <set>
 #include <vector>
 
 namespace cgmesh_test
@@ -167,6 +171,9 @@ vtkSmartPointer<vtkUnstructuredGrid> runFilter(
   filter->SetNumberOfThreads(settings.numberOfThreads);
   filter->SetRegionArrayName(
     settings.regionArrayName.empty() ? nullptr : settings.regionArrayName.c_str());
+  filter->SetColoringAlgorithm(settings.coloringAlgorithm);
+  filter->SetPartitionByRegion(settings.partitionByRegion);
+  filter->SetPartitionsPerRegion(settings.partitionsPerRegion);
   filter->Update();
   vtkSmartPointer<vtkUnstructuredGrid> output = filter->GetOutput();
   CGMESH_CHECK(output && output->GetNumberOfCells() > 0,
@@ -263,11 +270,58 @@ void checkArrayRange(vtkUnstructuredGrid* output, const char* name, double minim
          << maximum << "]");
 }
 
-double fieldValue(vtkUnstructuredGrid* output, const char* name)
+std::vector<vtkIdType> fieldValues(vtkUnstructuredGrid* output, const char* name)
 {
-  vtkDataArray* array = output->GetFieldData()->GetArray(name);
-  CGMESH_CHECK(array && array->GetNumberOfTuples() == 1, "field data " << name << " missing");
-  return array ? array->GetComponent(0, 0) : -1.0;
+  std::vector<vtkIdType> values;
+  auto* array = vtkIdTypeArray::SafeDownCast(output->GetFieldData()->GetArray(name));
+  CGMESH_CHECK(array, "field data " << name << " missing or not a vtkIdTypeArray");
+  for (vtkIdType tuple = 0; array && tuple < array->GetNumberOfTuples(); ++tuple)
+    values.push_back(array->GetValue(tuple));
+  return values;
+}
+
+// PartitionsPerColor and CellsPerColor count the distinct PartitionIds and the cells of each
+// ColorId; ColorBalance is the largest PartitionsPerColor over the mean.
+void checkColorPopulations(vtkUnstructuredGrid* output, int colors, int partitions)
+{
+  auto* stringArray =
+    vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("ColoringAlgorithm"));
+  CGMESH_CHECK(stringArray && stringArray->GetNumberOfValues() == 1 &&
+      vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(stringArray->GetValue(0)) >= 0,
+    "field data ColoringAlgorithm missing or not a colouring name");
+  const std::vector<vtkIdType> partitionsPerColor = fieldValues(output, "PartitionsPerColor");
+  const std::vector<vtkIdType> cellsPerColor = fieldValues(output, "CellsPerColor");
+  vtkDataArray* colorIds = output->GetCellData()->GetArray("ColorId");
+  vtkDataArray* partitionIds = output->GetCellData()->GetArray("PartitionId");
+  if (partitionsPerColor.size() != static_cast<size_t>(colors) ||
+    cellsPerColor.size() != static_cast<size_t>(colors) || !colorIds || !partitionIds)
+  {
+    CGMESH_CHECK(false, "colour populations do not hold one tuple per colour");
+    return;
+  }
+  std::vector<vtkIdType> countedCells(colors, 0);
+  std::vector<std::set<int>> partitionsOfColor(colors);
+  for (vtkIdType cellId = 0; cellId < output->GetNumberOfCells(); ++cellId)
+  {
+    const int color = static_cast<int>(colorIds->GetComponent(cellId, 0));
+    ++countedCells[color];
+    partitionsOfColor[color].insert(static_cast<int>(partitionIds->GetComponent(cellId, 0)));
+  }
+  CGMESH_CHECK(countedCells == cellsPerColor, "CellsPerColor differs from the ColorId counts");
+  for (int color = 0; color < colors; ++color)
+  {
+    CGMESH_CHECK(
+      static_cast<vtkIdType>(partitionsOfColor[color].size()) <= partitionsPerColor[color],
+      "colour " << color << " has cells of more partitions than PartitionsPerColor says");
+  }
+  CGMESH_CHECK(std::accumulate(
+                 partitionsPerColor.begin(), partitionsPerColor.end(), vtkIdType(0)) == partitions,
+    "PartitionsPerColor does not add up to NumberOfPartitions");
+  const double largest =
+    static_cast<double>(*std::max_element(partitionsPerColor.begin(), partitionsPerColor.end()));
+  const double balance = fieldValue(output, "ColorBalance");
+  CGMESH_CHECK(relativelyEqual(balance, largest * colors / partitions, 1e-12),
+    "ColorBalance " << balance << " is not the largest colour over the mean");
 }
 
 void checkOutputArrays(vtkUnstructuredGrid* output)
@@ -286,9 +340,17 @@ void checkOutputArrays(vtkUnstructuredGrid* output)
   checkArrayRange(output, "ColorId", 0, colors - 1);
   checkArrayRange(output, "EdgeRatio", 1.0, 1e6);
   checkArrayRange(output, "MinDihedralAngle", 1e-6, 180.0);
+  checkColorPopulations(output, static_cast<int>(colors), static_cast<int>(partitions));
 }
 
 } // namespace
+
+double fieldValue(vtkUnstructuredGrid* output, const char* name)
+{
+  vtkDataArray* array = output->GetFieldData()->GetArray(name);
+  CGMESH_CHECK(array && array->GetNumberOfTuples() == 1, "field data " << name << " missing");
+  return array ? array->GetComponent(0, 0) : -1.0;
+}
 
 void checkDataTransfer(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
 {

@@ -2,6 +2,7 @@
 #ifndef cgmesh_FilterTestSupport_h
 #define cgmesh_FilterTestSupport_h
 
+#include "vtkCoarseGrainedMeshAdaptation.h"
 #include "vtkSmartPointer.h"
 
 #include <iostream>
@@ -39,24 +40,30 @@ struct FilterSettings
   double edgeLengthFactor = 0.25; // splits every edge of a Kuhn cube in both iterations
   int numberOfThreads = 1;
   std::string regionArrayName;
+  int coloringAlgorithm = vtkCoarseGrainedMeshAdaptation::GREEDY_LEAST_USED;
+  bool partitionByRegion = false;
+  int partitionsPerRegion = 1;
 };
 
 // Runs vtkCoarseGrainedMeshAdaptation; returns null (and counts a failure) when it fails.
-vtkSmartPointer<vtkUnstructuredGrid> runFilter(vtkUnstructuredGrid* input,
-  const FilterSettings& settings);
+vtkSmartPointer<vtkUnstructuredGrid> runFilter(
+  vtkUnstructuredGrid* input, const FilterSettings& settings);
 
 // Conformity, orientation, no degenerate/duplicate/unused points, conserved volume and boundary
 // area (1e-9 relative) against the input.
 void checkConformity(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
 
 // LinearField exact on every output point, every child inside its ParentId tet with the children's
-// volumes summing to the parent's, Material copied, output arrays present and in range.
+// volumes summing to the parent's, Material copied, output arrays present and in range, colour
+// populations matching the PartitionId and ColorId arrays.
 void checkDataTransfer(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
 
 // Points, connectivity, cell types and every point and cell array bit-identical.
-bool identicalGrids(vtkUnstructuredGrid* first,
-  vtkUnstructuredGrid* second,
-  std::string& difference);
+bool identicalGrids(
+  vtkUnstructuredGrid* first, vtkUnstructuredGrid* second, std::string& difference);
+
+// The single value of a numeric field-data array; -1 (and a failed check) when it is missing.
+double fieldValue(vtkUnstructuredGrid* output, const char* name);
 
 } // namespace cgmesh_test
 

@@ -1,5 +1,6 @@
 // Error paths and properties of vtkCoarseGrainedMeshAdaptation: non-tetrahedral input, a missing
-// region array, empty input, ParaView's "None" region choice, defaults, clamping and PrintSelf.
+// region array, partitioning by region without one, empty input, ParaView's "None" region choice,
+// defaults, clamping, the colouring setters and PrintSelf.
 #include "FilterTestSupport.h"
 
 #include "vtkCellData.h"
@@ -99,6 +100,23 @@ void test_missingRegionArray()
   CGMESH_CHECK(run.outputCells() == 0, "output not empty after a missing region array");
 }
 
+void test_partitionByRegionWithoutRegionArray()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(2);
+  for (const char* name : { static_cast<const char*>(nullptr), "None" })
+  {
+    FilterRun run(input);
+    run.Filter->SetRegionArrayName(name);
+    run.Filter->PartitionByRegionOn();
+    run.update();
+    CGMESH_CHECK(run.Messages->Errors > 0, "no error for PartitionByRegion without regions");
+    CGMESH_CHECK(run.Messages->AllMessages.find("RegionArrayName") != std::string::npos,
+      "the error does not name RegionArrayName: " << run.Messages->AllMessages);
+    CGMESH_CHECK(run.UpdateResult == 0 && run.outputCells() == 0,
+      "PartitionByRegion without regions produced output");
+  }
+}
+
 void test_regionArrayChoices()
 {
   vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(2);
@@ -158,19 +176,45 @@ void test_defaultsAndClamping()
   CGMESH_CHECK(filter->GetEdgeLengthFactor() == 0.5, "EdgeLengthFactor default");
   CGMESH_CHECK(filter->GetNumberOfThreads() == 0, "NumberOfThreads default");
   CGMESH_CHECK(filter->GetRegionArrayName() == nullptr, "RegionArrayName default");
+  CGMESH_CHECK(filter->GetColoringAlgorithm() == vtkCoarseGrainedMeshAdaptation::GREEDY_LEAST_USED,
+    "ColoringAlgorithm default");
+  CGMESH_CHECK(!filter->GetPartitionByRegion(), "PartitionByRegion default");
+  CGMESH_CHECK(filter->GetPartitionsPerRegion() == 1, "PartitionsPerRegion default");
   filter->SetNumberOfPartitions(0);
   filter->SetNumberOfIterations(-3);
   filter->SetNumberOfThreads(-1);
+  filter->SetPartitionsPerRegion(0);
   CGMESH_CHECK(filter->GetNumberOfPartitions() == 1, "NumberOfPartitions not clamped to 1");
   CGMESH_CHECK(filter->GetNumberOfIterations() == 1, "NumberOfIterations not clamped to 1");
   CGMESH_CHECK(filter->GetNumberOfThreads() == 0, "NumberOfThreads not clamped to 0");
+  CGMESH_CHECK(filter->GetPartitionsPerRegion() == 1, "PartitionsPerRegion not clamped to 1");
   std::ostringstream printed;
   filter->Print(printed);
   for (const char* member : { "NumberOfPartitions", "NumberOfIterations", "MaximumEdgeLength",
-         "EdgeLengthFactor", "NumberOfThreads", "RegionArrayName" })
+         "EdgeLengthFactor", "NumberOfThreads", "RegionArrayName", "ColoringAlgorithm", "greedy-lu",
+         "PartitionByRegion", "PartitionsPerRegion" })
   {
     CGMESH_CHECK(printed.str().find(member) != std::string::npos, "PrintSelf omits " << member);
   }
+}
+
+void test_coloringSetters()
+{
+  vtkNew<vtkCoarseGrainedMeshAdaptation> filter;
+  filter->SetColoringAlgorithmToGreedy();
+  CGMESH_CHECK(std::string(filter->GetColoringAlgorithmName()) == "greedy", "ToGreedy");
+  filter->SetColoringAlgorithmToIterative();
+  CGMESH_CHECK(std::string(filter->GetColoringAlgorithmName()) == "iterative", "ToIterative");
+  filter->SetColoringAlgorithmToRecoloring();
+  CGMESH_CHECK(std::string(filter->GetColoringAlgorithmName()) == "recoloring", "ToRecoloring");
+  filter->SetColoringAlgorithmToGreedyLeastUsed();
+  CGMESH_CHECK(std::string(filter->GetColoringAlgorithmName()) == "greedy-lu", "ToGreedyLeastUsed");
+  filter->SetColoringAlgorithm(99);
+  CGMESH_CHECK(filter->GetColoringAlgorithm() == vtkCoarseGrainedMeshAdaptation::RECOLORING,
+    "ColoringAlgorithm not clamped to the last colouring");
+  filter->SetColoringAlgorithm(-5);
+  CGMESH_CHECK(filter->GetColoringAlgorithm() == vtkCoarseGrainedMeshAdaptation::GREEDY,
+    "ColoringAlgorithm not clamped to the first colouring");
 }
 
 } // namespace
@@ -179,10 +223,12 @@ int main()
 {
   test_nonTetrahedralInput();
   test_missingRegionArray();
+  test_partitionByRegionWithoutRegionArray();
   test_regionArrayChoices();
   test_emptyInput();
   test_abort();
   test_defaultsAndClamping();
+  test_coloringSetters();
   if (cgmesh_test::FailureCount > 0)
   {
     std::cerr << cgmesh_test::FailureCount << " checks failed\n";

@@ -1,5 +1,6 @@
-"""Drives the cgmesh executable: generate, refine (XML and legacy files, --stats), check, --help,
-and the error paths (one line on stderr, non-zero exit, no output file)."""
+"""Drives the cgmesh executable: generate, refine (XML and legacy files, --stats, every colouring,
+partitioning by region), check, --help, and the error paths (one line on stderr, non-zero exit,
+no output file)."""
 import argparse
 import json
 import os
@@ -34,10 +35,36 @@ CELL_TYPES 1
 """
 
 
+COLORINGS = ("greedy", "greedy-lu", "iterative", "recoloring")
+
+
 def test_help(cgmesh):
     for command in (["--help"], ["refine", "--help"], ["generate", "--help"], ["check", "--help"]):
         result = run(cgmesh, *command)
         check(result.returncode == 0 and "usage" in result.stdout, "help for %s" % command)
+    refine_help = run(cgmesh, "refine", "--help").stdout
+    for text in ("--coloring", "--partition-by-region", "--partitions-per-region", *COLORINGS):
+        check(text in refine_help, "refine --help does not mention " + text)
+
+
+def check_color_populations(statistics, description):
+    """The colour populations of a --stats file add up and match the balance figure."""
+    for key in ("coloring", "partitionsPerColor", "cellsPerColor", "colorBalance",
+                "partitionByRegion", "partitionsPerRegion"):
+        check(key in statistics, description + ": stats lacks " + key)
+    partitions_per_color = statistics.get("partitionsPerColor", [])
+    cells_per_color = statistics.get("cellsPerColor", [])
+    check(len(partitions_per_color) == statistics["colors"]
+          and len(cells_per_color) == statistics["colors"],
+          description + ": not one population entry per colour")
+    check(sum(partitions_per_color) == statistics["partitions"],
+          description + ": partitionsPerColor does not add up to the partitions")
+    check(sum(cells_per_color) == statistics["output"]["cells"],
+          description + ": cellsPerColor does not add up to the output cells")
+    if partitions_per_color:
+        mean = statistics["partitions"] / len(partitions_per_color)
+        check(abs(statistics["colorBalance"] - max(partitions_per_color) / mean) < 1e-9,
+              description + ": colorBalance is not the largest colour over the mean")
 
 
 def test_generate_refine_check(cgmesh, scratch):
@@ -60,6 +87,11 @@ def test_generate_refine_check(cgmesh, scratch):
         check(key in statistics, "stats lacks " + key)
     for phase in ("partition", "graph", "color", "adapt", "heal", "merge", "quality", "total"):
         check(phase in statistics["seconds"], "stats lacks seconds of " + phase)
+    check(statistics.get("coloring") == "greedy-lu", "default colouring in stats")
+    check(statistics.get("partitionByRegion") is False, "partitionByRegion default in stats")
+    check_color_populations(statistics, "default colouring")
+    for text in ("coloring", "partitions per color", "cells per color", "color balance"):
+        check(text in result.stdout, "the table lacks " + text)
 
     refined_one_thread = os.path.join(scratch, "refined-1.vtu")
     result = run(cgmesh, "refine", cube, refined_one_thread, "--partitions", "4", "--iterations",
@@ -78,11 +110,64 @@ def test_generate_refine_check(cgmesh, scratch):
     check(run(cgmesh, "check", legacy_out).returncode == 0, "check legacy output")
 
 
-def expect_error(cgmesh, scratch, description, arguments, output):
+def test_colorings(cgmesh, scratch):
+    """Every colouring refines the cube, reports itself and its populations, and gives the same
+    file for 1 and 2 threads."""
+    cube = os.path.join(scratch, "cube.vtu")
+    balance = {}
+    for coloring in COLORINGS:
+        outputs = []
+        for threads in ("1", "2"):
+            refined = os.path.join(scratch, "refined-%s-%s.vtu" % (coloring, threads))
+            stats = os.path.join(scratch, "stats-%s-%s.json" % (coloring, threads))
+            result = run(cgmesh, "refine", cube, refined, "--partitions", "16",
+                         "--edge-length-factor", "0.25", "--threads", threads,
+                         "--coloring", coloring, "--stats", stats)
+            check(result.returncode == 0, "refine --coloring %s: %s" % (coloring, result.stderr))
+            if result.returncode != 0:
+                break
+            with open(stats) as handle:
+                statistics = json.load(handle)
+            check(statistics["coloring"] == coloring, "stats name %s" % statistics["coloring"])
+            check_color_populations(statistics, coloring)
+            check(coloring in result.stdout, "the table does not name " + coloring)
+            balance[coloring] = statistics["colorBalance"]
+            with open(refined, "rb") as handle:
+                outputs.append(handle.read())
+        check(len(outputs) == 2 and outputs[0] == outputs[1],
+              "--coloring %s: output files of 1 and 2 threads differ" % coloring)
+        check(run(cgmesh, "check", refined).returncode == 0, "check --coloring " + coloring)
+    print("colour balance on the 3^3 cube, 16 partitions: %s" % balance)
+
+
+def test_partition_by_region(cgmesh, scratch):
+    finfet = os.path.join(scratch, "finfet.vtu")
+    result = run(cgmesh, "generate", "finfet", finfet, "--cells", "3000")
+    check(result.returncode == 0, "generate finfet: " + result.stderr)
+    refined = os.path.join(scratch, "finfet-refined.vtu")
+    stats = os.path.join(scratch, "finfet.json")
+    result = run(cgmesh, "refine", finfet, refined, "--region-array", "Material",
+                 "--partition-by-region", "--partitions-per-region", "2", "--threads", "2",
+                 "--stats", stats)
+    check(result.returncode == 0, "refine --partition-by-region: " + result.stderr)
+    check("by region" in result.stdout, "the table does not say the partitions follow regions")
+    with open(stats) as handle:
+        statistics = json.load(handle)
+    check(statistics["partitionByRegion"] is True, "partitionByRegion in stats")
+    check(statistics["partitionsPerRegion"] == 2, "partitionsPerRegion in stats")
+    check(statistics["partitions"] > 1, "partitions by region: %d" % statistics["partitions"])
+    check_color_populations(statistics, "partition by region")
+    result = run(cgmesh, "check", refined, "--region-array", "Material")
+    check(result.returncode == 0, "check the refined FinFET: " + result.stdout)
+
+
+def expect_error(cgmesh, scratch, description, arguments, output, exit_status=None):
     result = run(cgmesh, *arguments)
     lines = [line for line in result.stderr.strip().splitlines()
              if not line.startswith("cgmesh: warning:")]
     check(result.returncode != 0, description + ": exit status 0")
+    check(exit_status is None or result.returncode == exit_status,
+          description + ": exit status %d, expected %s" % (result.returncode, exit_status))
     check(len(lines) == 1 and lines[0].startswith("cgmesh: error:"),
           description + ": stderr is not one error line: %r" % result.stderr)
     leftovers = [name for name in os.listdir(scratch) if name.startswith(os.path.basename(output))]
@@ -111,6 +196,26 @@ def test_errors(cgmesh, scratch):
     ]
     for description, arguments in cases:
         expect_error(cgmesh, scratch, description, arguments, out)
+
+    # Usage errors: exit status 2.
+    usage_cases = [
+        ("unknown colouring", ["refine", cube, out, "--coloring", "rainbow"]),
+        ("colouring by label", ["refine", cube, out, "--coloring", "Greedy-LU"]),
+        ("partitions per region alone", ["refine", cube, out, "--partitions-per-region", "2"]),
+        ("partition by region without regions", ["refine", cube, out, "--partition-by-region"]),
+        ("partition by region with a value", ["refine", cube, out, "--region-array", "Material",
+                                              "--partition-by-region=yes"]),
+        ("partitions and partition by region", ["refine", cube, out, "--partitions", "4",
+                                                "--region-array", "Material",
+                                                "--partition-by-region"]),
+        ("zero partitions per region", ["refine", cube, out, "--region-array", "Material",
+                                        "--partition-by-region", "--partitions-per-region", "0"]),
+    ]
+    for description, arguments in usage_cases:
+        expect_error(cgmesh, scratch, description, arguments, out, exit_status=2)
+    result = run(cgmesh, "refine", cube, out, "--coloring", "rainbow")
+    check("rainbow" in result.stderr and "greedy-lu" in result.stderr,
+          "the unknown-colouring error does not name the choices: " + result.stderr)
     check(run(cgmesh, "frobnicate").returncode != 0, "unknown command accepted")
 
 
@@ -123,6 +228,8 @@ def main():
     os.makedirs(options.scratch)
     test_help(options.cgmesh)
     test_generate_refine_check(options.cgmesh, options.scratch)
+    test_colorings(options.cgmesh, options.scratch)
+    test_partition_by_region(options.cgmesh, options.scratch)
     test_errors(options.cgmesh, options.scratch)
     if FAILURES:
         print("%d checks failed" % len(FAILURES), file=sys.stderr)

@@ -1,5 +1,6 @@
 """Run with pvbatch: loads the built CoarseGrainedMesher plugin through paraview.simple and runs
-the filter on a tetrahedralized Wavelet, checking counts and arrays."""
+the filter on a tetrahedralized Wavelet, checking counts and arrays, with the colouring chosen by
+its label in the drop-down."""
 import argparse
 import sys
 
@@ -32,6 +33,14 @@ def main():
     adaptation = CoarseGrainedMeshAdaptation(Input=tetrahedra)  # noqa: F821 (from LoadPlugin)
     check(adaptation.NumberOfPartitions == 1024, "NumberOfPartitions default")
     check(adaptation.RegionArrayName == "None", "RegionArrayName default")
+    check(adaptation.ColoringAlgorithm == "Greedy-LU",
+          "ColoringAlgorithm default: %s" % adaptation.ColoringAlgorithm)
+    labels = adaptation.GetProperty("ColoringAlgorithm").Available
+    check(list(labels) == ["Greedy", "Greedy-LU", "Iterative", "Recoloring"],
+          "ColoringAlgorithm labels: %s" % labels)
+    check(adaptation.PartitionByRegion == 0, "PartitionByRegion default")
+    check(adaptation.PartitionsPerRegion == 1, "PartitionsPerRegion default")
+    adaptation.ColoringAlgorithm = "Recoloring"
     adaptation.NumberOfPartitions = 8
     adaptation.NumberOfIterations = 1
     adaptation.EdgeLengthFactor = 0.25  # below every edge of the tetrahedralized voxels
@@ -45,8 +54,12 @@ def main():
     for name in ("PartitionId", "ColorId", "EdgeRatio", "MinDihedralAngle"):
         check(refined.GetCellData().GetArray(name) is not None, "cell array %s missing" % name)
     check(refined.GetPointData().GetArray("RTData") is not None, "point data not interpolated")
-    for name in ("NumberOfColors", "NumberOfPartitions", "TotalSeconds"):
+    for name in ("NumberOfColors", "NumberOfPartitions", "TotalSeconds", "PartitionsPerColor",
+                 "CellsPerColor", "ColorBalance"):
         check(refined.GetFieldData().GetArray(name) is not None, "field data %s missing" % name)
+    coloring = refined.GetFieldData().GetAbstractArray("ColoringAlgorithm")
+    check(coloring is not None and coloring.GetValue(0) == "recoloring",
+          "the filter did not run the colouring chosen by label")
 
     if FAILURES:
         print("%d checks failed" % len(FAILURES), file=sys.stderr)
