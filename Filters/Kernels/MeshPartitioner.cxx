@@ -73,6 +73,31 @@ DualGraph buildDualGraph(const TetMesh& mesh)
 namespace
 {
 
+bool isConnected(const DualGraph& graph)
+{
+  const std::size_t count = graph.offsets.size() - 1;
+  std::vector<char> reached(count, 0);
+  std::vector<std::size_t> stack = { 0 };
+  reached[0] = 1;
+  std::size_t visited = 0;
+  while (!stack.empty())
+  {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    ++visited;
+    for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
+    {
+      const std::size_t w = static_cast<std::size_t>(graph.neighbours[k]);
+      if (!reached[w])
+      {
+        reached[w] = 1;
+        stack.push_back(w);
+      }
+    }
+  }
+  return visited == count;
+}
+
 // METIS k-way on a graph in compressed rows; contiguous parts when the graph is connected.
 Status partitionGraphKway(const DualGraph& graph, int parts, std::vector<int>& partOfVertex)
 {
@@ -97,16 +122,16 @@ Status partitionGraphKway(const DualGraph& graph, int parts, std::vector<int>& p
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_NUMBERING] = 0;
   options[METIS_OPTION_SEED] = 1;
-  options[METIS_OPTION_CONTIG] = 1;
+  // Contiguity is only possible for a connected graph (asking anyway makes METIS complain).
+  options[METIS_OPTION_CONTIG] = isConnected(graph) ? 1 : 0;
   auto run = [&]()
   {
     return METIS_PartGraphKway(&vertexCount, &constraintCount, offsets.data(), neighbours.data(),
       nullptr, nullptr, nullptr, &partCount, nullptr, nullptr, options, &edgeCut, partition.data());
   };
   int result = run();
-  if (result != METIS_OK)
+  if (result != METIS_OK && options[METIS_OPTION_CONTIG] == 1)
   {
-    // Contiguity cannot be had for a disconnected mesh; partition without it.
     options[METIS_OPTION_CONTIG] = 0;
     result = run();
   }
