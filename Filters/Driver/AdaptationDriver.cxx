@@ -3,6 +3,7 @@
 #include "ColorLoop.h"
 #include "ColoringSupport.h"
 #include "Geometry.h"
+#include "ImprovementSweep.h"
 #include "MeshPartitioner.h"
 #include "ParallelFor.h"
 #include "PartitionColoring.h"
@@ -105,6 +106,25 @@ double meanTetVolume(const TetMesh& mesh)
     sum += std::abs(signedVolume6(mesh, tet)) / 6.0;
   }
   return mesh.tets.empty() ? 0 : sum / static_cast<double>(mesh.tets.size());
+}
+
+// Flags output tets (in merge order: partition by partition) that touch a former interface vertex.
+void markNearFormerInterface(const std::vector<PartitionMesh>& partitions,
+  const std::vector<char>& formerInterface, AdaptationResult& result)
+{
+  result.nearFormerInterface.clear();
+  for (const PartitionMesh& partition : partitions)
+  {
+    for (const Tet& tet : partition.tets)
+    {
+      bool near = false;
+      for (PointId p : tet)
+      {
+        near = near || (p < static_cast<PointId>(formerInterface.size()) && formerInterface[p]);
+      }
+      result.nearFormerInterface.push_back(near ? 1 : 0);
+    }
+  }
 }
 
 void distributeTets(
@@ -224,17 +244,34 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
       return pool->run(currentThreadIndex(), in, switches, out);
     };
   }
+  setup.improve = options.improveQuality;
+  setup.improvement.passes = options.improvementPasses;
+  // Improvement must not undo Delaunay refinement's volume bound.
+  setup.improvement.maximumVolume =
+    options.method == RefinementMethod::Delaunay ? result.volumeBound : 0.0;
   status = runColorLoop(setup, options, state, result);
   tetgenWorkers.reset();
   if (!status.ok() || result.aborted)
   {
     return status;
   }
+  const std::vector<char> formerInterface =
+    findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
+  if (options.improveQuality)
+  {
+    status =
+      improveAcrossFormerInterfaces(setup, options, result.numberOfPartitions, state, result);
+    if (!status.ok() || result.aborted)
+    {
+      return status;
+    }
+  }
+  markNearFormerInterface(state.partitions, formerInterface, result);
 
   const auto start = Clock::now();
   MergedMesh merged;
-  status = mergePartitions(
-    state.partitions, state.coordinates, state.inputPointCount, state.newPointSources, merged);
+  status = mergePartitions(state.partitions, state.coordinates, state.inputPointCount,
+    state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints });
   state = AdaptationState();
   result.seconds.merge = secondsSince(start);
   if (!status.ok())
@@ -243,12 +280,15 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   }
   result.mesh = std::move(merged.mesh);
   result.parentCell = std::move(merged.parentCell);
-  result.partitionOfCell = std::move(merged.partitionOfCell);
   result.provenance = std::move(merged.provenance);
-  result.colorOfCell.resize(result.partitionOfCell.size());
+  // A tet was refined by the partition of the input tet it comes from (the improvement sweep
+  // regroups tets but refines nothing).
+  result.partitionOfCell.resize(result.parentCell.size());
+  result.colorOfCell.resize(result.parentCell.size());
   result.cellsPerColor.assign(result.numberOfColors, 0);
   for (std::size_t t = 0; t < result.partitionOfCell.size(); ++t)
   {
+    result.partitionOfCell[t] = partitionOfCell[result.parentCell[t]];
     result.colorOfCell[t] = colorOfPartition[result.partitionOfCell[t]];
     ++result.cellsPerColor[result.colorOfCell[t]];
   }

@@ -40,8 +40,12 @@ struct AdaptationOptions
   bool serializeTetGen = false;
   // Partitions whose TetGen call is made to fail, to exercise the fallback (tests).
   std::vector<int> simulateTetGenFailureIn;
-  std::string coloring =
-    "greedy-lu";                  // see coloringNames(): greedy, greedy-lu, iterative, recoloring
+  // After refinement: edge removal, face swaps and smoothing inside each partition, then a second
+  // sweep over shifted partitions so that former interfaces are improved too.
+  bool improveQuality = true;
+  int improvementPasses = 2;
+  // See coloringNames(): greedy, greedy-lu, iterative, recoloring.
+  std::string coloring = "greedy-lu";
   bool partitionByRegion = false; // cut along regions (needs input regions) instead of METIS
   int partitionsPerRegion = 1;    // with partitionByRegion: METIS parts within each region
 
@@ -60,6 +64,7 @@ struct PhaseSeconds
   double heal = 0;      // reading neighbours' outboxes
   double adapt = 0;     // template refinement, posting outboxes
   double post = 0;      // global numbering of new points after each colour
+  double improve = 0;   // quality improvement, both sweeps
   double merge = 0;     // joining partitions, point provenance
   double total = 0;
 };
@@ -88,6 +93,12 @@ struct AdaptationResult
   std::vector<std::int64_t> partitionsPerColor; // colour population, in partitions
   std::vector<std::int64_t> cellsPerColor;      // colour population, in output tets
   double colorBalance = 0;                      // largest colour set / mean (partitions)
+  std::int64_t edgeRemovals = 0;                // quality improvement operations
+  std::int64_t faceSwaps = 0;
+  std::int64_t vertexMoves = 0;
+  // Per output tet: 1 when it touches a vertex that lay on an interface between refinement
+  // partitions (to compare quality near former interfaces with the interior).
+  std::vector<char> nearFormerInterface;
   bool aborted = false;
   PhaseSeconds seconds;
   std::vector<std::string> warnings;

@@ -114,6 +114,9 @@ Status numberNewPoints(IterationContext& iteration, const std::vector<int>& memb
       state.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
     state.newPointSources.insert(state.newPointSources.end(), refinement.newPointSources.begin(),
       refinement.newPointSources.end());
+    state.movedPoints.insert(
+      state.movedPoints.end(), refinement.movedPoints.begin(), refinement.movedPoints.end());
+    refinement.movedPoints.clear();
     result.healedSplits += refinement.healedSplits;
     result.createdSplits += refinement.createdSplits;
     refinement.newCoordinates = std::vector<double>();
@@ -122,7 +125,8 @@ Status numberNewPoints(IterationContext& iteration, const std::vector<int>& memb
   return status;
 }
 
-Status processColor(IterationContext& iteration, const std::vector<int>& members, int color,
+// The heal and adapt loops of one colour.
+Status refineMembers(IterationContext& iteration, const std::vector<int>& members, int color,
   int iterationIndex, AdaptationState& state, AdaptationResult& result)
 {
   const ColorLoopSetup& setup = iteration.setup;
@@ -169,9 +173,60 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
       return report.status;
     }
   }
-  if (!status.ok())
+  return status;
+}
+
+Status improveMembers(IterationContext& iteration, const std::vector<int>& members,
+  AdaptationState& state, AdaptationResult& result)
+{
+  std::vector<ImprovementStatistics> statistics(members.size());
+  std::vector<Status> outcomes(members.size(), Status::success());
+  Status status = runParallel(iteration.setup.threads, static_cast<std::int64_t>(members.size()),
+    [&](std::int64_t i)
+    {
+      const int p = members[i];
+      PartitionRefinement& refinement = iteration.refinements[p];
+      const PartitionPoints points{ &state.coordinates, &refinement.newCoordinates };
+      outcomes[i] = improvePartition(state.partitions[p], points, iteration.setup.improvement,
+        statistics[i], refinement.movedPoints);
+    });
+  for (std::size_t i = 0; i < members.size(); ++i)
   {
-    return status;
+    result.edgeRemovals += statistics[i].edgeRemovals;
+    result.faceSwaps += statistics[i].faceSwaps;
+    result.vertexMoves += statistics[i].vertexMoves;
+    if (!outcomes[i].ok())
+    {
+      return outcomes[i];
+    }
+  }
+  return status;
+}
+
+Status processColor(IterationContext& iteration, const std::vector<int>& members, int color,
+  int iterationIndex, AdaptationState& state, AdaptationResult& result)
+{
+  const ColorLoopSetup& setup = iteration.setup;
+  Status status = Status::success();
+  auto start = Clock::now();
+  if (setup.refine)
+  {
+    status = refineMembers(iteration, members, color, iterationIndex, state, result);
+    if (!status.ok())
+    {
+      return status;
+    }
+  }
+
+  if (setup.improve)
+  {
+    start = Clock::now();
+    status = improveMembers(iteration, members, state, result);
+    result.seconds.improve += secondsSince(start);
+    if (!status.ok())
+    {
+      return status;
+    }
   }
 
   start = Clock::now();
@@ -187,8 +242,11 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
 {
   const auto members = partitionsByColor(*setup.colorOfPartition, setup.numberOfColors);
   const int steps = setup.numberOfIterations * setup.numberOfColors;
-  result.partitionTaskSeconds.assign(
-    static_cast<std::size_t>(setup.numberOfIterations) * result.numberOfPartitions, 0.0);
+  if (setup.refine)
+  {
+    result.partitionTaskSeconds.assign(
+      static_cast<std::size_t>(setup.numberOfIterations) * result.numberOfPartitions, 0.0);
+  }
   for (int iteration = 0; iteration < setup.numberOfIterations; ++iteration)
   {
     // Recomputed per iteration: the last one's splits made new interface points.

@@ -7,6 +7,7 @@
 #include "AdaptationDriver.h"
 #include "PartitionGraph.h"
 #include "PartitionRefiner.h"
+#include "QualityImprover.h"
 #include "TemplateTable.h"
 #include "TetGenRefiner.h"
 
@@ -22,6 +23,7 @@ struct AdaptationState
   std::vector<double> coordinates; // all global points
   PointId inputPointCount = 0;
   std::vector<PointSource> newPointSources; // for global points from inputPointCount on
+  std::vector<PointId> movedPoints;         // points quality improvement moved (may repeat)
 };
 
 struct ColorLoopSetup
@@ -36,6 +38,9 @@ struct ColorLoopSetup
   RefinementMethod method = RefinementMethod::Template;
   DelaunayParameters delaunay;
   TetGenRunner runTetGen; // Delaunay: how partitions call TetGen
+  bool refine = true;     // false: a sweep of quality improvement only
+  bool improve = false;
+  ImprovementParameters improvement;
 };
 
 // Runs all iterations. Sets result.aborted (and returns success) when options.abortRequested

@@ -1,6 +1,9 @@
 #include "MeshMerge.h"
 
+#include "TetLocator.h"
+
 #include <algorithm>
+#include <memory>
 #include <new>
 
 namespace cgmesh
@@ -10,22 +13,68 @@ namespace
 
 // Weights of every global point over input points. A new point is a weighted sum of points with
 // smaller ids (it was inserted after them), so one pass in id order suffices.
-PointProvenance expandProvenance(
-  PointId inputPointCount, const std::vector<PointSource>& newPointSources)
+PointProvenance expandProvenance(PointId inputPointCount,
+  const std::vector<PointSource>& newPointSources, const std::vector<double>& coordinates,
+  const RelocationInput& relocation)
 {
+  std::vector<char> relocated;
+  if (relocation.input && relocation.movedPoints && !relocation.movedPoints->empty())
+  {
+    relocated.assign(inputPointCount + newPointSources.size(), 0);
+    for (PointId p : *relocation.movedPoints)
+    {
+      relocated[p] = 1;
+    }
+  }
+  std::unique_ptr<TetLocator> locator;
+  if (!relocated.empty())
+  {
+    const TetMesh* input = relocation.input;
+    locator =
+      std::make_unique<TetLocator>(input->tets, [input](PointId id) { return input->point(id); });
+  }
+  auto locateInInput = [&](PointId p, PointProvenance& all)
+  {
+    const auto where = locator->locate(coordinates.data() + 3 * p);
+    for (int k = 0; k < 4; ++k)
+    {
+      all.sources.push_back(relocation.input->tets[where.tet][k]);
+      all.weights.push_back(where.barycentric[k]);
+    }
+    all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
+  };
   PointProvenance all;
   const PointId total = inputPointCount + static_cast<PointId>(newPointSources.size());
   all.offsets.reserve(total + 1);
   all.offsets.push_back(0);
   for (PointId p = 0; p < inputPointCount; ++p)
   {
+    if (!relocated.empty() && relocated[p])
+    {
+      locateInInput(p, all);
+      continue;
+    }
     all.sources.push_back(p);
     all.weights.push_back(1.0);
     all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
   }
   std::vector<std::pair<PointId, double>> terms;
-  for (const PointSource& location : newPointSources)
+  for (std::size_t index = 0; index < newPointSources.size(); ++index)
   {
+    const PointSource& location = newPointSources[index];
+    const PointId point = inputPointCount + static_cast<PointId>(index);
+    if (!relocated.empty())
+    {
+      for (int slot = 0; slot < 4 && !relocated[point]; ++slot)
+      {
+        relocated[point] = location.weights[slot] != 0 && relocated[location.points[slot]];
+      }
+      if (relocated[point])
+      {
+        locateInInput(point, all);
+        continue;
+      }
+    }
     terms.clear();
     for (int slot = 0; slot < 4; ++slot)
     {
@@ -59,7 +108,8 @@ PointProvenance expandProvenance(
 
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
-  const std::vector<PointSource>& newPointSources, MergedMesh& merged)
+  const std::vector<PointSource>& newPointSources, MergedMesh& merged,
+  const RelocationInput& relocation)
 {
   try
   {
@@ -86,7 +136,8 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
     merged = MergedMesh();
     merged.removedPoints = globalCount - outputCount;
 
-    const PointProvenance all = expandProvenance(inputPointCount, newPointSources);
+    const PointProvenance all =
+      expandProvenance(inputPointCount, newPointSources, coordinates, relocation);
     merged.mesh.coordinates.reserve(3 * outputCount);
     merged.provenance.offsets.reserve(outputCount + 1);
     merged.provenance.offsets.push_back(0);

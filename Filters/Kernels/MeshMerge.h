@@ -35,9 +35,19 @@ struct MergedMesh
 
 // `coordinates` holds all global points; points from `inputPointCount` on were created by
 // refinement at the locations in `newPointSources` (one entry per created point, in id order).
+// Points quality improvement moved, and points whose location derives from one (a midpoint of a
+// moved point, ...), no longer lie where their recorded sources say: those get their provenance
+// from the input tet that contains their final position (`input` is the unrefined mesh).
+struct RelocationInput
+{
+  const TetMesh* input = nullptr;
+  const std::vector<PointId>* movedPoints = nullptr;
+};
+
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
-  const std::vector<PointSource>& newPointSources, MergedMesh& merged);
+  const std::vector<PointSource>& newPointSources, MergedMesh& merged,
+  const RelocationInput& relocation = RelocationInput());
 
 } // namespace cgmesh
 

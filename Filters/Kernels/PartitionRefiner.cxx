@@ -245,6 +245,10 @@ void finalizeNewPoints(
     entry.vertex = globalId(entry.vertex);
   }
   refinement.newInterfacePoints.clear();
+  for (PointId& point : refinement.movedPoints)
+  {
+    point = globalId(point);
+  }
   for (PointSource& source : refinement.newPointSources)
   {
     for (int slot = 0; slot < 4; ++slot)

@@ -57,8 +57,9 @@ struct PartitionRefinement
   // Vertices this partition made or received during the iteration that lie on an interface
   // (older ones are flagged in RefinementContext::interfaceVertex).
   std::unordered_set<PointId> newInterfacePoints;
-  std::int64_t healedSplits = 0;  // splits taken from neighbours' outboxes
-  std::int64_t createdSplits = 0; // splits this partition made itself
+  std::vector<PointId> movedPoints; // vertices quality improvement moved
+  std::int64_t healedSplits = 0;    // splits taken from neighbours' outboxes
+  std::int64_t createdSplits = 0;   // splits this partition made itself
 };
 
 // Marks the points that lie in tets of two or more partitions: only edges between two such points

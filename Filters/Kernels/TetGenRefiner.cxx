@@ -1,5 +1,6 @@
 #include "TetGenRefiner.h"
 
+#include "ConstrainedFaces.h"
 #include "Geometry.h"
 #include "TetLocator.h"
 
@@ -18,61 +19,8 @@ namespace cgmesh
 namespace
 {
 
-using Face = std::array<PointId, 3>;
-
 // Enough to halve an interface edge down from 2^8 times the interface length.
 constexpr int MaximumTemplateRounds = 8;
-
-// Faces that TetGen must keep: the partition's boundary (faces in one tet only) and, inside it,
-// faces between two regions. Also reports the edges of the boundary faces alone.
-void findConstrainedFaces(const PartitionMesh& partition, std::vector<Face>& boundaryFaces,
-  std::vector<Face>& regionInterfaceFaces)
-{
-  struct FaceOfTet
-  {
-    Face corners;
-    std::size_t tet;
-  };
-  std::vector<FaceOfTet> faces;
-  faces.reserve(4 * partition.tets.size());
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
-  {
-    for (int skip = 0; skip < 4; ++skip)
-    {
-      Face corners;
-      int n = 0;
-      for (int i = 0; i < 4; ++i)
-      {
-        if (i != skip)
-        {
-          corners[n++] = partition.tets[t][i];
-        }
-      }
-      std::sort(corners.begin(), corners.end());
-      faces.push_back({ corners, t });
-    }
-  }
-  std::sort(faces.begin(), faces.end(),
-    [](const FaceOfTet& a, const FaceOfTet& b) { return a.corners < b.corners; });
-  for (std::size_t i = 0; i < faces.size();)
-  {
-    std::size_t j = i + 1;
-    while (j < faces.size() && faces[j].corners == faces[i].corners)
-    {
-      ++j;
-    }
-    if (j - i == 1)
-    {
-      boundaryFaces.push_back(faces[i].corners);
-    }
-    else if (!partition.regions.empty() &&
-      partition.regions[faces[i].tet] != partition.regions[faces[i + 1].tet])
-    {
-      regionInterfaceFaces.push_back(faces[i].corners);
-    }
-    i = j;
-  }
-}
 
 void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges)
 {

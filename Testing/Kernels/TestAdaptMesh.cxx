@@ -35,6 +35,7 @@ AdaptationResult refine(const TetMesh& input, int partitions, int threads, int i
   options.numberOfThreads = threads;
   options.numberOfIterations = iterations;
   options.edgeLengthFactor = 0.25;
+  options.improveQuality = false; // pure templates: exact 8x tets per iteration
   AdaptationResult result;
   const Status status = adaptMesh(input, options, result);
   CHECK(status.ok());

@@ -1,0 +1,20 @@
+// The second quality sweep. During refinement every vertex on an interface between partitions is
+// frozen, so the tets around interfaces keep their template shapes. This sweep regroups the mesh
+// into box-shaped partitions that cut across the refinement partitions, so that most former
+// interfaces lie inside a partition, and runs quality improvement once more over a new colouring.
+#ifndef cgmesh_ImprovementSweep_h
+#define cgmesh_ImprovementSweep_h
+
+#include "ColorLoop.h"
+
+namespace cgmesh
+{
+
+// `refinementSetup` is the set-up the refinement ran with (threads, improvement parameters);
+// `boxes` the approximate number of box partitions.
+Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
+  const AdaptationOptions& options, int boxes, AdaptationState& state, AdaptationResult& result);
+
+} // namespace cgmesh
+
+#endif

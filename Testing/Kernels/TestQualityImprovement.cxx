@@ -1,0 +1,213 @@
+// Quality improvement: each operation on a hand-made configuration, then the whole pipeline on a
+// multi-material device: conformity, conservation, fixed interfaces, better worst tets,
+// identical output across thread counts.
+#include "AdaptationDriver.h"
+#include "FinFetGenerator.h"
+#include "MeshValidation.h"
+#include "QualityImprover.h"
+#include "TestHarness.h"
+#include "TetQuality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace cgmesh;
+
+namespace
+{
+
+double worstMeanRatio(const TetMesh& mesh)
+{
+  double worst = 1;
+  for (const Tet& t : mesh.tets)
+  {
+    worst = std::min(
+      worst, meanRatio(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])));
+  }
+  return worst;
+}
+
+double percentileMinDihedral(const TetMesh& mesh, double fraction)
+{
+  std::vector<double> angles;
+  for (const Tet& t : mesh.tets)
+  {
+    angles.push_back(
+      minimumDihedralAngle(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])));
+  }
+  std::sort(angles.begin(), angles.end());
+  return angles[static_cast<std::size_t>(fraction * (angles.size() - 1))];
+}
+
+// A closed star: an octahedron split into 8 tets around an inner vertex placed off-centre.
+// Improvement runs on the star as a partition: its boundary vertices are fixed.
+PartitionMesh starAround(std::vector<double>& coordinates, const double inner[3])
+{
+  coordinates = { 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1 };
+  coordinates.insert(coordinates.end(), inner, inner + 3);
+  const PointId centre = 6;
+  const int faces[8][3] = { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 2, 0, 5 },
+    { 1, 2, 5 }, { 3, 1, 5 }, { 0, 3, 5 } };
+  PartitionMesh star;
+  for (const auto& f : faces)
+  {
+    Tet tet = { f[0], f[1], f[2], centre };
+    if (signedVolume6(coordinates.data() + 3 * f[0], coordinates.data() + 3 * f[1],
+          coordinates.data() + 3 * f[2], coordinates.data() + 3 * centre) < 0)
+    {
+      std::swap(tet[0], tet[1]);
+    }
+    star.tets.push_back(tet);
+    star.parentCells.push_back(0);
+  }
+  return star;
+}
+
+TetMesh asMesh(const PartitionMesh& partition, const std::vector<double>& coordinates)
+{
+  TetMesh mesh;
+  mesh.coordinates = coordinates;
+  mesh.tets = partition.tets;
+  return mesh;
+}
+
+void test_smoothing_moves_free_vertex_only()
+{
+  std::vector<double> coordinates;
+  const double inner[3] = { 0.5, 0.1, -0.15 }; // inside, far off-centre
+  PartitionMesh star = starAround(coordinates, inner);
+  const std::vector<double> boundaryBefore(coordinates.begin(), coordinates.begin() + 18);
+  const MeshReport before = inspectMesh(asMesh(star, coordinates));
+  const double worstBefore = worstMeanRatio(asMesh(star, coordinates));
+  std::vector<double> provisional;
+  ImprovementStatistics statistics;
+  std::vector<PointId> moved;
+  ImprovementParameters parameters;
+  parameters.targetQuality = 0.9;
+  CHECK(improvePartition(
+    star, PartitionPoints{ &coordinates, &provisional }, parameters, statistics, moved)
+          .ok());
+  CHECK(statistics.vertexMoves >= 1);
+  CHECK(moved.size() == 1 && moved[0] == 6);
+  CHECK(std::equal(boundaryBefore.begin(), boundaryBefore.end(), coordinates.begin()));
+  const MeshReport after = inspectMesh(asMesh(star, coordinates));
+  CHECK(after.isValid());
+  CHECK_CLOSE(after.volume, before.volume, 1e-12);
+  CHECK(worstMeanRatio(asMesh(star, coordinates)) > worstBefore + 0.05);
+}
+
+// The classic 3->2 case: a long edge (a, b) through a nearly flat triangle of three points; the
+// three tets around it become two well-shaped tets on the triangle.
+void test_edge_removal_three_to_two()
+{
+  std::vector<double> coordinates = { 0, 0, 1, 0, 0, -1, 1, 0, 0.05, -0.5, 0.866, -0.05, -0.5,
+    -0.866, 0.02 };
+  PartitionMesh ring;
+  for (int i = 0; i < 3; ++i)
+  {
+    Tet tet = { 0, 1, 2 + i, 2 + (i + 1) % 3 };
+    if (signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+          coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]) < 0)
+    {
+      std::swap(tet[2], tet[3]);
+    }
+    ring.tets.push_back(tet);
+    ring.parentCells.push_back(i);
+  }
+  const MeshReport before = inspectMesh(asMesh(ring, coordinates));
+  std::vector<double> provisional;
+  ImprovementStatistics statistics;
+  std::vector<PointId> moved;
+  ImprovementParameters parameters;
+  parameters.targetQuality = 0.9;
+  CHECK(improvePartition(
+    ring, PartitionPoints{ &coordinates, &provisional }, parameters, statistics, moved)
+          .ok());
+  CHECK_EQUAL(statistics.edgeRemovals, 1);
+  CHECK_EQUAL(ring.tets.size(), 2u);
+  const MeshReport after = inspectMesh(asMesh(ring, coordinates));
+  CHECK(after.isValid());
+  CHECK_CLOSE(after.volume, before.volume, 1e-12);
+  CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
+}
+
+bool identical(const AdaptationResult& a, const AdaptationResult& b)
+{
+  return a.mesh.coordinates.size() == b.mesh.coordinates.size() &&
+    std::memcmp(a.mesh.coordinates.data(), b.mesh.coordinates.data(),
+      a.mesh.coordinates.size() * sizeof(double)) == 0 &&
+    a.mesh.tets == b.mesh.tets && a.mesh.regions == b.mesh.regions &&
+    a.parentCell == b.parentCell && a.provenance.weights == b.provenance.weights;
+}
+
+void test_device_refinement_with_improvement()
+{
+  TetMesh input;
+  CHECK(generateFinFet(15000, input).ok());
+  AdaptationOptions options;
+  options.numberOfPartitions = 32;
+  options.edgeLengthFactor = 0.6; // splits only some edges: irregular templates to improve
+  options.numberOfThreads = 1;
+  options.improveQuality = false;
+  AdaptationResult plain;
+  CHECK(adaptMesh(input, options, plain).ok());
+  options.improveQuality = true;
+  AdaptationResult improved;
+  CHECK(adaptMesh(input, options, improved).ok());
+
+  const MeshReport before = inspectMesh(input);
+  const MeshReport after = inspectMesh(improved.mesh);
+  if (!after.isValid())
+  {
+    std::cerr << after.describeProblems();
+  }
+  CHECK(after.isValid());
+  CHECK_CLOSE(after.volume, before.volume, 1e-12);
+  CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
+  CHECK_CLOSE(after.regionInterfaceArea, before.regionInterfaceArea, 1e-12);
+  for (const auto& region : before.regionVolumes)
+  {
+    CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
+  }
+  CHECK(improved.edgeRemovals + improved.faceSwaps + improved.vertexMoves > 0);
+  const double worstPlain = worstMeanRatio(plain.mesh);
+  const double worstImproved = worstMeanRatio(improved.mesh);
+  std::cout << "worst mean ratio " << worstPlain << " -> " << worstImproved
+            << "; 1st percentile of the minimum dihedral angle "
+            << percentileMinDihedral(plain.mesh, 0.01) << " -> "
+            << percentileMinDihedral(improved.mesh, 0.01) << " degrees; " << improved.edgeRemovals
+            << " edge removals, " << improved.faceSwaps << " face swaps, " << improved.vertexMoves
+            << " vertex moves\n";
+  CHECK(worstImproved > worstPlain);
+  CHECK(percentileMinDihedral(improved.mesh, 0.01) >= percentileMinDihedral(plain.mesh, 0.01));
+  CHECK_EQUAL(improved.nearFormerInterface.size(), improved.mesh.tets.size());
+
+  // Moved and derived points are relocated in the input: linear point data stays exact.
+  for (PointId p = 0; p < improved.mesh.numberOfPoints(); ++p)
+  {
+    double interpolated = 0;
+    for (auto k = improved.provenance.offsets[p]; k < improved.provenance.offsets[p + 1]; ++k)
+    {
+      const double* source = input.point(improved.provenance.sources[k]);
+      interpolated += improved.provenance.weights[k] * (2 * source[0] - source[1] + source[2]);
+    }
+    const double* point = improved.mesh.point(p);
+    CHECK_CLOSE(interpolated, 2 * point[0] - point[1] + point[2], 1e-9);
+  }
+
+  options.numberOfThreads = 2;
+  AdaptationResult parallel;
+  CHECK(adaptMesh(input, options, parallel).ok());
+  CHECK(identical(improved, parallel));
+}
+
+} // namespace
+
+int main()
+{
+  test_smoothing_moves_free_vertex_only();
+  test_edge_removal_three_to_two();
+  test_device_refinement_with_improvement();
+  return cgmesh_test::finish("TestQualityImprovement");
+}
