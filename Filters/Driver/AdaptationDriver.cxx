@@ -4,6 +4,7 @@
 #include "ColoringSupport.h"
 #include "Geometry.h"
 #include "ImprovementSweep.h"
+#include "InputPreparation.h"
 #include "MeshPartitioner.h"
 #include "ParallelFor.h"
 #include "PartitionColoring.h"
@@ -244,6 +245,7 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
       return pool->run(currentThreadIndex(), in, switches, out);
     };
   }
+  setup.maximumNumberOfCells = options.maximumNumberOfCells;
   setup.improve = options.improveQuality;
   setup.improvement.passes = options.improvementPasses;
   // Improvement must not undo Delaunay refinement's volume bound.
@@ -300,17 +302,43 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   return Status::success();
 }
 
+void reportRepairs(const InputRepairs& repairs, AdaptationResult& result)
+{
+  result.reorientedTets = repairs.reorientedTets;
+  result.mergedPoints = repairs.mergedPoints;
+  if (repairs.reorientedTets > 0)
+  {
+    result.warnings.push_back("turned around " + std::to_string(repairs.reorientedTets) +
+      " inverted tetrahedra: the output is consistently positively oriented");
+  }
+  if (repairs.mergedPoints > 0)
+  {
+    result.warnings.push_back("merged " + std::to_string(repairs.mergedPoints) +
+      " points that repeat another point's coordinates: parts touching without shared nodes are "
+      "joined");
+  }
+}
+
 } // namespace
 
-Status adaptMesh(const TetMesh& input, const AdaptationOptions& options, AdaptationResult& result)
+Status adaptMesh(
+  const TetMesh& rawInput, const AdaptationOptions& options, AdaptationResult& result)
 {
   const auto start = Clock::now();
   result = AdaptationResult();
-  Status status = validateInput(input, options);
+  Status status = validateInput(rawInput, options);
   if (!status.ok())
   {
     return status;
   }
+  TetMesh input;
+  InputRepairs repairs;
+  status = prepareInput(rawInput, input, repairs);
+  if (!status.ok())
+  {
+    return status;
+  }
+  reportRepairs(repairs, result);
   result.numberOfThreads = resolveThreadCount(options.numberOfThreads);
   if (options.method == RefinementMethod::Delaunay)
   {

@@ -29,6 +29,8 @@ struct AdaptationOptions
   double maximumEdgeLength = 0;  // absolute split threshold; used when > 0
   double edgeLengthFactor = 0.5; // else threshold = factor * mean input edge length
   int numberOfThreads = 0;       // 0 = all available cores
+  // Refuse (before refining) an iteration forecast to produce more tets than this; 0: no limit.
+  std::int64_t maximumNumberOfCells = 100000000;
   // Delaunay: TetGen's volume bound, absolute when > 0, else volumeFactor * mean input tet
   // volume; interface edges are split by templates up to the edge length of a regular tet of
   // that volume.
@@ -87,6 +89,8 @@ struct AdaptationResult
   std::vector<int> fallbackPartitions; // their partitions (with repeats across iterations)
   std::int64_t tetgenPoints = 0;       // Steiner points TetGen inserted
   bool concurrentTetGen = false;       // TetGen calls overlapped (in separate worker processes)
+  std::int64_t reorientedTets = 0;     // inverted input tets that were turned around
+  std::int64_t mergedPoints = 0;       // input points merged into a coincident one
   // Seconds each partition's heal and refinement took, per iteration: entry
   // iteration * numberOfPartitions + partition (the data for makespan models).
   std::vector<double> partitionTaskSeconds;
@@ -104,8 +108,8 @@ struct AdaptationResult
   std::vector<std::string> warnings;
 };
 
-// Refines `input` (left untouched). On failure the Status carries a one-line message and
-// `result` holds no mesh.
+// Refines `input` (left untouched; see InputPreparation.h for the checks and repairs). On failure
+// the Status carries a one-line message and `result` holds no mesh.
 Status adaptMesh(const TetMesh& input, const AdaptationOptions& options, AdaptationResult& result);
 
 } // namespace cgmesh

@@ -1,5 +1,6 @@
 #include "ColorLoop.h"
 
+#include "Geometry.h"
 #include "ParallelFor.h"
 
 #include <algorithm>
@@ -235,6 +236,51 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
   return status;
 }
 
+// Refuses an iteration whose forecast size exceeds the guard, before it allocates anything big.
+Status checkForecastSize(
+  const ColorLoopSetup& setup, const RefinementContext& context, const AdaptationState& state)
+{
+  if (!setup.refine || setup.maximumNumberOfCells <= 0)
+  {
+    return Status::success();
+  }
+  const std::int64_t partitions = static_cast<std::int64_t>(state.partitions.size());
+  std::vector<std::int64_t> forecast(state.partitions.size(), 0);
+  Status status = runParallel(setup.threads, partitions,
+    [&](std::int64_t p)
+    {
+      const PartitionMesh& partition = state.partitions[p];
+      if (setup.method == RefinementMethod::Template)
+      {
+        forecast[p] = predictTemplateTetCount(partition, context);
+        return;
+      }
+      // TetGen's tets average about a third of the bound (measured), plus what is there.
+      double volume = 0;
+      for (const Tet& tet : partition.tets)
+      {
+        volume += signedVolume6(state.coordinates.data() + 3 * tet[0],
+                    state.coordinates.data() + 3 * tet[1], state.coordinates.data() + 3 * tet[2],
+                    state.coordinates.data() + 3 * tet[3]) /
+          6.0;
+      }
+      forecast[p] = static_cast<std::int64_t>(partition.tets.size()) +
+        static_cast<std::int64_t>(3.0 * volume / setup.delaunay.maximumVolume);
+    });
+  std::int64_t total = 0;
+  for (std::int64_t count : forecast)
+  {
+    total += count;
+  }
+  if (status.ok() && total > setup.maximumNumberOfCells)
+  {
+    return Status::failure("refining would produce about " + std::to_string(total) +
+      " tetrahedra, more than the limit of " + std::to_string(setup.maximumNumberOfCells) +
+      " (MaximumNumberOfCells); raise the limit or refine less");
+  }
+  return status;
+}
+
 } // namespace
 
 Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& options,
@@ -258,6 +304,11 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     context.refinement.interfaceVertex = &interfaceVertex;
     context.refinement.squaredThreshold = setup.squaredThreshold;
     context.refinement.templates = setup.templates;
+    Status forecast = checkForecastSize(setup, context.refinement, state);
+    if (!forecast.ok())
+    {
+      return forecast;
+    }
 
     for (int color = 0; color < setup.numberOfColors; ++color)
     {

@@ -37,8 +37,9 @@ struct ColorLoopSetup
   const TemplateTable* templates = nullptr;
   RefinementMethod method = RefinementMethod::Template;
   DelaunayParameters delaunay;
-  TetGenRunner runTetGen; // Delaunay: how partitions call TetGen
-  bool refine = true;     // false: a sweep of quality improvement only
+  TetGenRunner runTetGen;                // Delaunay: how partitions call TetGen
+  bool refine = true;                    // false: a sweep of quality improvement only
+  std::int64_t maximumNumberOfCells = 0; // refuse an iteration forecast to exceed it (0: no limit)
   bool improve = false;
   ImprovementParameters improvement;
 };

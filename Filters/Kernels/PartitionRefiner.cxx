@@ -167,6 +167,29 @@ std::vector<char> findInterfaceVertices(
   return interfaceVertex;
 }
 
+std::int64_t predictTemplateTetCount(
+  const PartitionMesh& partition, const RefinementContext& context)
+{
+  std::int64_t count = 0;
+  const std::vector<double>& coordinates = *context.coordinates;
+  for (const Tet& tet : partition.tets)
+  {
+    int splitMask = 0;
+    for (int e = 0; e < 6; ++e)
+    {
+      const PointId a = tet[TetEdgeCorners[e][0]], b = tet[TetEdgeCorners[e][1]];
+      const double lengthSquared = squaredDistance(
+        coordinates.data() + 3 * std::min(a, b), coordinates.data() + 3 * std::max(a, b));
+      splitMask |= (lengthSquared > context.squaredThreshold) << e;
+    }
+    count += splitMask == 0 ? 1
+      : splitMask == 63     ? 8
+                            : static_cast<std::int64_t>(
+                            context.templates->partialSplit(splitMask, cornerRanks(tet)).size());
+  }
+  return count;
+}
+
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
   const EdgeMidpointMap& received, PartitionRefinement& refinement, const EdgeFilter& filter)
 {

@@ -62,6 +62,11 @@ struct PartitionRefinement
   std::int64_t createdSplits = 0;   // splits this partition made itself
 };
 
+// How many tets refinePartition() will make of `partition` (without healing, which never adds
+// splits the partition would not make itself): the size guard's forecast.
+std::int64_t predictTemplateTetCount(
+  const PartitionMesh& partition, const RefinementContext& context);
+
 // Marks the points that lie in tets of two or more partitions: only edges between two such points
 // can be shared, so only their splits go to outboxes.
 std::vector<char> findInterfaceVertices(
