@@ -214,7 +214,8 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   AdaptationState state;
   state.partitions.resize(result.numberOfPartitions);
   distributeTets(input, partitionOfCell, state);
-  const TemplateTable templates;
+  // Built once per process (about 30 ms) and never changed afterwards.
+  static const TemplateTable templates;
   ColorLoopSetup setup;
   setup.graph = &graph;
   setup.colorOfPartition = &colorOfPartition;
