@@ -131,11 +131,41 @@ Status parseColoringName(const std::string& text, std::string& coloring)
     "unknown colouring '" + text + "' for --coloring (use " + knownNames + ")");
 }
 
+Status parseMethodName(const std::string& text, std::string& method)
+{
+  if (vtkCoarseGrainedMeshAdaptation::MethodFromName(text.c_str()) < 0)
+    return Status::failure("unknown method '" + text + "' for --method (use template, delaunay)");
+  method = text;
+  return Status::success();
+}
+
+// Each method's size options are an error with the other method, rather than silently unused.
+Status checkMethodOptions(const std::map<std::string, std::string>& options)
+{
+  const auto method = options.find("--method");
+  const bool delaunay = method != options.end() && method->second == "delaunay";
+  const std::vector<const char*> templateOptions = { "--max-edge-length", "--edge-length-factor" };
+  const std::vector<const char*> delaunayOptions = { "--max-volume", "--volume-factor",
+    "--radius-edge-ratio" };
+  for (const char* name : delaunay ? templateOptions : delaunayOptions)
+  {
+    if (options.count(name))
+      return Status::failure(
+        std::string(name) + " needs --method " + (delaunay ? "template" : "delaunay"));
+  }
+  if (options.count("--max-volume") && options.count("--volume-factor"))
+    return Status::failure("give either --max-volume or --volume-factor, not both");
+  return Status::success();
+}
+
 // Options that only make sense together, or that exclude each other.
 Status checkRefineOptionCombinations(const std::map<std::string, std::string>& options)
 {
   if (options.count("--max-edge-length") && options.count("--edge-length-factor"))
     return Status::failure("give either --max-edge-length or --edge-length-factor, not both");
+  const Status methodStatus = checkMethodOptions(options);
+  if (!methodStatus.ok())
+    return methodStatus;
   const bool byRegion = options.count("--partition-by-region") > 0;
   if (byRegion && options.count("--partitions"))
     return Status::failure("give either --partitions or --partition-by-region, not both");
@@ -152,10 +182,18 @@ Status applyRefineOption(const std::string& name, const std::string& value, Refi
     return parseInt(value, name, 1, INT_MAX, parsed.numberOfPartitions);
   if (name == "--iterations")
     return parseInt(value, name, 1, INT_MAX, parsed.numberOfIterations);
+  if (name == "--method")
+    return parseMethodName(value, parsed.method);
   if (name == "--max-edge-length")
     return parseDouble(value, name, 0.0, parsed.maximumEdgeLength);
   if (name == "--edge-length-factor")
     return parseDouble(value, name, 0.0, parsed.edgeLengthFactor);
+  if (name == "--max-volume")
+    return parseDouble(value, name, 0.0, parsed.maximumVolume);
+  if (name == "--volume-factor")
+    return parseDouble(value, name, 0.0, parsed.volumeFactor);
+  if (name == "--radius-edge-ratio")
+    return parseDouble(value, name, 1.0, parsed.radiusEdgeRatio);
   if (name == "--threads")
     return parseInt(value, name, 0, INT_MAX, parsed.numberOfThreads);
   if (name == "--region-array")
@@ -243,6 +281,41 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
     return Status::success();
   }
   return Status::failure("unknown shape '" + parsed.shape + "' (use 'cube' or 'finfet')");
+}
+
+Status parseTetGenArguments(const std::vector<std::string>& arguments, TetGenArguments& parsed)
+{
+  std::vector<std::string> positionals;
+  std::map<std::string, std::string> options;
+  Status status = splitArguments(arguments, positionals, options);
+  if (!status.ok())
+    return status;
+  status = checkPositionalCount(positionals, 2, "IN and OUT");
+  if (!status.ok())
+    return status;
+  parsed.inputFile = positionals[0];
+  parsed.outputFile = positionals[1];
+  if (!options.count("--max-volume"))
+    return Status::failure("--max-volume V is required");
+  for (const auto& option : options)
+  {
+    const std::string& name = option.first;
+    if (name == "--max-volume")
+      status = parseDouble(option.second, name, 0.0, parsed.maximumVolume);
+    else if (name == "--radius-edge-ratio")
+      status = parseDouble(option.second, name, 1.0, parsed.radiusEdgeRatio);
+    else if (name == "--region-array")
+      parsed.regionArrayName = option.second;
+    else if (name == "--stats")
+      parsed.statsFile = option.second;
+    else
+      status = Status::failure("unknown option " + name + " (see --help)");
+    if (!status.ok())
+      return status;
+  }
+  if (parsed.maximumVolume <= 0)
+    return Status::failure("--max-volume must be positive");
+  return Status::success();
 }
 
 Status parseCheckArguments(const std::vector<std::string>& arguments, CheckArguments& parsed)

@@ -17,9 +17,13 @@ struct RefineArguments
   std::string outputFile;
   int numberOfPartitions = 1024;
   int numberOfIterations = 1;
-  double maximumEdgeLength = 0;  // used when > 0
-  double edgeLengthFactor = 0.5; // fraction of the input's mean edge length
-  int numberOfThreads = 0;       // 0 = all cores
+  std::string method = "template"; // a vtkCoarseGrainedMeshAdaptation method name
+  double maximumEdgeLength = 0;    // template: used when > 0
+  double edgeLengthFactor = 0.5;   // template: fraction of the input's mean edge length
+  double maximumVolume = 0;        // delaunay: used when > 0
+  double volumeFactor = 0.1;       // delaunay: fraction of the input's mean tet volume
+  double radiusEdgeRatio = 2.0;    // delaunay: TetGen's q
+  int numberOfThreads = 0;         // 0 = all cores
   std::string regionArrayName;
   std::string coloring = "greedy-lu"; // a vtkCoarseGrainedMeshAdaptation colouring name
   bool partitionByRegion = false;     // cut along the regions of regionArrayName
@@ -35,6 +39,17 @@ struct GenerateArguments
   std::string outputFile;
 };
 
+// cgmesh tetgen: serial TetGen on the whole mesh, the baseline of the Delaunay method.
+struct TetGenArguments
+{
+  std::string inputFile;
+  std::string outputFile;
+  double maximumVolume = 0; // required, > 0
+  double radiusEdgeRatio = 2.0;
+  std::string regionArrayName;
+  std::string statsFile; // JSON statistics, written when not empty
+};
+
 struct CheckArguments
 {
   std::string inputFile;
@@ -47,6 +62,7 @@ bool wantsHelp(const std::vector<std::string>& arguments);
 // Each parser reads the arguments after the command name.
 Status parseRefineArguments(const std::vector<std::string>& arguments, RefineArguments& parsed);
 Status parseGenerateArguments(const std::vector<std::string>& arguments, GenerateArguments& parsed);
+Status parseTetGenArguments(const std::vector<std::string>& arguments, TetGenArguments& parsed);
 Status parseCheckArguments(const std::vector<std::string>& arguments, CheckArguments& parsed);
 
 // Strict number parsing: the whole text must be a number within [minimum, maximum].

@@ -11,6 +11,7 @@ namespace cgmesh
 int runRefineCommand(const std::vector<std::string>& arguments);
 int runGenerateCommand(const std::vector<std::string>& arguments);
 int runCheckCommand(const std::vector<std::string>& arguments);
+int runTetGenCommand(const std::vector<std::string>& arguments);
 
 // Prints "cgmesh: error: <message>" on stderr and returns the exit status for errors.
 int reportError(const std::string& message);

@@ -26,7 +26,9 @@ void printRefineUsage()
   std::cout
     << "usage: cgmesh refine IN OUT [--partitions N | --partition-by-region\n"
        "                     [--partitions-per-region N]] [--iterations K]\n"
-       "                     [--max-edge-length L | --edge-length-factor F] [--threads T]\n"
+       "                     [--method template] [--max-edge-length L | --edge-length-factor F]\n"
+       "                     [--method delaunay [--max-volume V | --volume-factor F]\n"
+       "                      [--radius-edge-ratio Q]] [--threads T]\n"
        "                     [--region-array NAME] [--coloring NAME] [--stats FILE.json]\n"
        "\n"
        "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
@@ -38,9 +40,21 @@ void printRefineUsage()
        "                          with --partition-by-region: METIS partitions per region\n"
        "                          (default 1)\n"
        "  --iterations K          refinement passes (default 1)\n"
-       "  --max-edge-length L     split edges longer than L (absolute length)\n"
-       "  --edge-length-factor F  split edges longer than F x mean input edge length "
-       "(default 0.5)\n"
+       "  --method NAME           refinement of each partition (default template):\n"
+       "                            template  split long edges by conforming templates\n"
+       "                            delaunay  templates on interfaces, TetGen inside partitions\n"
+       "  --max-edge-length L     template: split edges longer than L (absolute length)\n"
+       "  --edge-length-factor F  template: split edges longer than F x mean input edge length\n"
+       "                          (default 0.5)\n"
+       "  --max-volume V          delaunay: TetGen volume bound (switch a), absolute\n"
+       "  --volume-factor F       delaunay: volume bound V = F x mean input tet volume\n"
+       "                          (default 0.1). Interface edges are split by templates down\n"
+       "                          to (6 sqrt(2) V)^(1/3), the edge of the regular tet of volume\n"
+       "                          V; TetGen (switches r Y q a) refines partition interiors with\n"
+       "                          their boundary kept; a partition where TetGen fails is\n"
+       "                          refined by templates instead (a warning names it)\n"
+       "  --radius-edge-ratio Q   delaunay: TetGen radius-edge quality bound (switch q), >= 1\n"
+       "                          (default 2)\n"
        "  --threads T             OpenMP threads, 0 = all cores (default 0)\n"
        "  --region-array NAME     cell array with material/region ids\n"
        "  --coloring NAME         colouring of the partition graph (default greedy-lu):\n"
@@ -48,7 +62,8 @@ void printRefineUsage()
        "                            greedy-lu   least-used permissible colour, serial, balanced\n"
        "                            iterative   speculative parallel colouring, conflict rounds\n"
        "                            recoloring  parallel rebalancing of an initial colouring\n"
-       "  --stats FILE.json       write counts, colour populations and phase timings as JSON\n";
+       "  --stats FILE.json       write counts, colour populations, Delaunay figures and phase\n"
+       "                          timings as JSON\n";
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start)
@@ -60,12 +75,16 @@ void configureFilter(const RefineArguments& arguments, vtkCoarseGrainedMeshAdapt
 {
   filter->SetNumberOfPartitions(arguments.numberOfPartitions);
   filter->SetNumberOfIterations(arguments.numberOfIterations);
+  // The parser accepted only names the filter knows.
+  filter->SetMethod(vtkCoarseGrainedMeshAdaptation::MethodFromName(arguments.method.c_str()));
   filter->SetMaximumEdgeLength(arguments.maximumEdgeLength);
   filter->SetEdgeLengthFactor(arguments.edgeLengthFactor);
+  filter->SetMaximumVolume(arguments.maximumVolume);
+  filter->SetVolumeFactor(arguments.volumeFactor);
+  filter->SetRadiusEdgeRatio(arguments.radiusEdgeRatio);
   filter->SetNumberOfThreads(arguments.numberOfThreads);
   filter->SetRegionArrayName(
     arguments.regionArrayName.empty() ? nullptr : arguments.regionArrayName.c_str());
-  // The parser accepted only names the filter knows.
   filter->SetColoringAlgorithm(
     vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(arguments.coloring.c_str()));
   filter->SetPartitionByRegion(arguments.partitionByRegion);

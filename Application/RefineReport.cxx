@@ -18,8 +18,8 @@ namespace
 // JSON key of each phase and the field-data array the filter stores it in.
 const std::pair<const char*, const char*> FilterPhases[] = { { "partition", "PartitionSeconds" },
   { "graph", "GraphSeconds" }, { "color", "ColorSeconds" }, { "heal", "HealSeconds" },
-  { "adapt", "AdaptSeconds" }, { "post", "PostSeconds" }, { "merge", "MergeSeconds" },
-  { "quality", "QualitySeconds" }, { "total", "TotalSeconds" } };
+  { "adapt", "AdaptSeconds" }, { "post", "PostSeconds" }, { "improve", "ImproveSeconds" },
+  { "merge", "MergeSeconds" }, { "quality", "QualitySeconds" }, { "total", "TotalSeconds" } };
 
 double fieldValue(vtkFieldData* fieldData, const char* name)
 {
@@ -55,6 +55,8 @@ std::string joinValues(const std::vector<std::int64_t>& values, const char* sepa
   return joined.str();
 }
 
+} // namespace
+
 std::string jsonString(const std::string& text)
 {
   std::ostringstream escaped;
@@ -73,8 +75,6 @@ std::string jsonString(const std::string& text)
   return escaped.str();
 }
 
-} // namespace
-
 void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& statistics)
 {
   vtkFieldData* fieldData = output->GetFieldData();
@@ -85,6 +85,12 @@ void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& stat
   statistics.numberOfThreads = static_cast<int>(fieldValue(fieldData, "NumberOfThreads"));
   statistics.edgeLengthThreshold = fieldValue(fieldData, "EdgeLengthThreshold");
   statistics.coloring = fieldString(fieldData, "ColoringAlgorithm");
+  statistics.method = fieldString(fieldData, "Method");
+  statistics.volumeBound = fieldValue(fieldData, "VolumeBound");
+  statistics.delaunayFallbacks =
+    static_cast<std::int64_t>(fieldValue(fieldData, "DelaunayFallbacks"));
+  statistics.fallbackPartitions = fieldValues(fieldData, "FallbackPartitions");
+  statistics.tetgenPoints = static_cast<std::int64_t>(fieldValue(fieldData, "TetGenPoints"));
   statistics.partitionsPerColor = fieldValues(fieldData, "PartitionsPerColor");
   statistics.cellsPerColor = fieldValues(fieldData, "CellsPerColor");
   statistics.colorBalance = fieldValue(fieldData, "ColorBalance");
@@ -114,9 +120,20 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
          << "\n"
          << std::setw(24) << "threads" << statistics.numberOfThreads << "\n"
          << std::setw(24) << "iterations" << statistics.numberOfIterations << "\n"
+         << std::setw(24) << "method" << statistics.method << "\n"
          << std::setw(24) << "edge length threshold" << std::setprecision(6)
-         << statistics.edgeLengthThreshold << "\n"
-         << "\n"
+         << statistics.edgeLengthThreshold << "\n";
+  if (statistics.method == "delaunay")
+  {
+    stream << std::setw(24) << "volume bound" << statistics.volumeBound << "\n"
+           << std::setw(24) << "tetgen points" << statistics.tetgenPoints << "\n"
+           << std::setw(24) << "delaunay fallbacks" << statistics.delaunayFallbacks
+           << (statistics.fallbackPartitions.empty()
+                  ? std::string()
+                  : " (partitions " + joinValues(statistics.fallbackPartitions, " ") + ")")
+           << "\n";
+  }
+  stream << "\n"
          << std::setw(24) << "phase"
          << "seconds\n";
   for (const auto& phase : statistics.seconds)
@@ -150,7 +167,12 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"colorBalance\": " << statistics.colorBalance << ",\n"
        << "  \"threads\": " << statistics.numberOfThreads << ",\n"
        << "  \"iterations\": " << statistics.numberOfIterations << ",\n"
+       << "  \"method\": " << jsonString(statistics.method) << ",\n"
        << "  \"edgeLengthThreshold\": " << statistics.edgeLengthThreshold << ",\n"
+       << "  \"volumeBound\": " << statistics.volumeBound << ",\n"
+       << "  \"tetgenPoints\": " << statistics.tetgenPoints << ",\n"
+       << "  \"delaunayFallbacks\": " << statistics.delaunayFallbacks << ",\n"
+       << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ") << "],\n"
        << "  \"seconds\": {";
   for (size_t index = 0; index < statistics.seconds.size(); ++index)
   {

@@ -27,7 +27,12 @@ struct RefineStatistics
   int numberOfPartitions = 0;
   int numberOfThreads = 0;
   int numberOfIterations = 0;
-  double edgeLengthThreshold = 0;
+  double edgeLengthThreshold = 0;               // the (interface) edge length threshold
+  std::string method;                           // "template" or "delaunay"
+  double volumeBound = 0;                       // delaunay: the absolute volume bound applied
+  std::int64_t delaunayFallbacks = 0;           // partition refinements that fell back to templates
+  std::vector<std::int64_t> fallbackPartitions; // their partitions
+  std::int64_t tetgenPoints = 0;                // Steiner points TetGen inserted
   bool partitionByRegion = false;
   int partitionsPerRegion = 1;
   std::string coloring;
@@ -45,6 +50,9 @@ void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& stat
 void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stream);
 
 Status writeStatisticsJson(const RefineStatistics& statistics, const std::string& fileName);
+
+// `text` as a quoted, escaped JSON string.
+std::string jsonString(const std::string& text);
 
 } // namespace cgmesh
 

@@ -15,6 +15,8 @@ void printUsage(std::ostream& stream)
             "commands:\n"
             "  refine IN OUT [options]   refine a tetrahedral mesh (.vtu or .vtk)\n"
             "  generate cube N OUT.vtu   write the unit cube as N^3 hexahedra of 6 tetrahedra\n"
+            "  tetgen IN OUT --max-volume V [options]\n"
+            "                            serial TetGen on the whole mesh (Delaunay baseline)\n"
             "  check IN [options]        report conformity, orientation, volume and areas\n"
             "\n"
             "Run 'cgmesh <command> --help' for the options of a command.\n";
@@ -49,6 +51,8 @@ int main(int argc, char* argv[])
     return cgmesh::runGenerateCommand(commandArguments);
   if (command == "check")
     return cgmesh::runCheckCommand(commandArguments);
+  if (command == "tetgen")
+    return cgmesh::runTetGenCommand(commandArguments);
   cgmesh::reportError("unknown command '" + command + "' (try cgmesh --help)");
   return cgmesh::UsageErrorExitStatus;
 }

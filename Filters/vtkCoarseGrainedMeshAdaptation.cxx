@@ -1,11 +1,10 @@
 #include "vtkCoarseGrainedMeshAdaptation.h"
 
+#include "cgmeshTetQuality.h"
 #include "cgmeshVTKConversion.h"
 
 #include "AdaptationDriver.h"
-#include "ParallelFor.h"
 
-#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -15,14 +14,11 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
-#include "vtkMeshQuality.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
-#include "vtkTetra.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -46,6 +42,13 @@ double secondsSince(Clock::time_point start)
 // Names of vtkCoarseGrainedMeshAdaptation::ColoringAlgorithms, indexed by value; they are the
 // names the driver's colouring registry knows.
 const char* const ColoringAlgorithmNames[] = { "greedy", "greedy-lu", "iterative", "recoloring" };
+
+// Names of vtkCoarseGrainedMeshAdaptation::Methods, indexed by value.
+const char* const MethodNames[] = { "template", "delaunay" };
+
+// Fallback warnings beyond this many are summed up in one line, so that a mesh on which TetGen
+// fails everywhere does not flood the output window.
+constexpr std::size_t MaximumFallbackWarnings = 20;
 
 // Share of the progress bar given to adaptMesh; the rest covers array transfer and quality.
 constexpr double AdaptationProgressShare = 0.85;
@@ -143,55 +146,25 @@ void interpolatePointData(vtkPointData* inputPointData, const cgmesh::PointProve
   }
 }
 
-// Edge ratio and minimum dihedral angle (degrees) of every output tet, from vtkMeshQuality's
-// per-cell measures, in blocks of cells spread over the run's threads; returns the seconds spent.
-double addQualityArrays(vtkUnstructuredGrid* output, int threads)
-{
-  const auto start = Clock::now();
-  const vtkIdType numberOfCells = output->GetNumberOfCells();
-  vtkNew<vtkDoubleArray> edgeRatio;
-  edgeRatio->SetName("EdgeRatio");
-  edgeRatio->SetNumberOfValues(numberOfCells);
-  vtkNew<vtkDoubleArray> minDihedralAngle;
-  minDihedralAngle->SetName("MinDihedralAngle");
-  minDihedralAngle->SetNumberOfValues(numberOfCells);
-
-  constexpr vtkIdType CellsPerBlock = 16384;
-  const vtkIdType blocks = (numberOfCells + CellsPerBlock - 1) / CellsPerBlock;
-  vtkPoints* points = output->GetPoints();
-  vtkCellArray* cells = output->GetCells();
-  cgmesh::runParallel(threads, blocks,
-    [&](std::int64_t block)
-    {
-      vtkNew<vtkTetra> tetra;
-      vtkNew<vtkIdList> corners;
-      double coordinates[3];
-      const vtkIdType end = std::min(numberOfCells, (block + 1) * CellsPerBlock);
-      for (vtkIdType cellId = block * CellsPerBlock; cellId < end; ++cellId)
-      {
-        cells->GetCellAtId(cellId, corners); // the id-list overload is safe to call concurrently
-        for (vtkIdType corner = 0; corner < 4; ++corner)
-        {
-          points->GetPoint(corners->GetId(corner), coordinates);
-          tetra->GetPoints()->SetPoint(corner, coordinates);
-        }
-        edgeRatio->SetValue(cellId, vtkMeshQuality::TetEdgeRatio(tetra));
-        minDihedralAngle->SetValue(cellId, vtkMeshQuality::TetMinAngle(tetra));
-      }
-    });
-  output->GetCellData()->AddArray(edgeRatio);
-  output->GetCellData()->AddArray(minDihedralAngle);
-  return secondsSince(start);
-}
-
-void addFieldData(const cgmesh::AdaptationResult& result, const char* coloringName,
+void addFieldData(const cgmesh::AdaptationResult& result, vtkCoarseGrainedMeshAdaptation* filter,
   double qualitySeconds, double totalSeconds, vtkFieldData* fieldData)
 {
   addFieldValue(fieldData, "NumberOfColors", result.numberOfColors);
   addFieldValue(fieldData, "NumberOfPartitions", result.numberOfPartitions);
   addFieldValue(fieldData, "NumberOfThreads", result.numberOfThreads);
   addFieldValue(fieldData, "EdgeLengthThreshold", result.edgeLengthThreshold);
-  addFieldString(fieldData, "ColoringAlgorithm", coloringName);
+  addFieldString(fieldData, "Method", filter->GetMethodName());
+  addFieldValue(fieldData, "VolumeBound", result.volumeBound);
+  addFieldValue(fieldData, "DelaunayFallbacks", static_cast<double>(result.delaunayFallbacks));
+  addFieldValue(fieldData, "TetGenPoints", static_cast<double>(result.tetgenPoints));
+  vtkNew<vtkIntArray> fallbackPartitions; // one tuple per fallback, in refinement order
+  fallbackPartitions->SetName("FallbackPartitions");
+  for (const int partition : result.fallbackPartitions)
+  {
+    fallbackPartitions->InsertNextValue(partition);
+  }
+  fieldData->AddArray(fallbackPartitions);
+  addFieldString(fieldData, "ColoringAlgorithm", filter->GetColoringAlgorithmName());
   addColorPopulation(fieldData, "PartitionsPerColor", result.partitionsPerColor);
   addColorPopulation(fieldData, "CellsPerColor", result.cellsPerColor);
   addFieldValue(fieldData, "ColorBalance", result.colorBalance);
@@ -202,6 +175,7 @@ void addFieldData(const cgmesh::AdaptationResult& result, const char* coloringNa
   addFieldValue(fieldData, "HealSeconds", seconds.heal);
   addFieldValue(fieldData, "AdaptSeconds", seconds.adapt);
   addFieldValue(fieldData, "PostSeconds", seconds.post);
+  addFieldValue(fieldData, "ImproveSeconds", seconds.improve);
   addFieldValue(fieldData, "MergeSeconds", seconds.merge);
   addFieldValue(fieldData, "QualitySeconds", qualitySeconds);
   addFieldValue(fieldData, "TotalSeconds", totalSeconds);
@@ -212,8 +186,14 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter)
   cgmesh::AdaptationOptions options;
   options.numberOfPartitions = filter->GetNumberOfPartitions();
   options.numberOfIterations = filter->GetNumberOfIterations();
+  options.method = filter->GetMethod() == vtkCoarseGrainedMeshAdaptation::DELAUNAY
+    ? cgmesh::RefinementMethod::Delaunay
+    : cgmesh::RefinementMethod::Template;
   options.maximumEdgeLength = filter->GetMaximumEdgeLength();
   options.edgeLengthFactor = filter->GetEdgeLengthFactor();
+  options.maximumVolume = filter->GetMaximumVolume();
+  options.volumeFactor = filter->GetVolumeFactor();
+  options.radiusEdgeRatio = filter->GetRadiusEdgeRatio();
   options.numberOfThreads = filter->GetNumberOfThreads();
   options.coloring = filter->GetColoringAlgorithmName();
   options.partitionByRegion = filter->GetPartitionByRegion();
@@ -228,6 +208,29 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter)
     return filter->CheckAbort();
   };
   return options;
+}
+
+// Forwards the driver's warnings; fallback warnings beyond the first few are summed up.
+void reportWarnings(vtkCoarseGrainedMeshAdaptation* filter, const cgmesh::AdaptationResult& result)
+{
+  std::size_t fallbackWarnings = 0;
+  for (const std::string& warning : result.warnings)
+  {
+    // The driver words every fallback warning "partition P: Delaunay refinement failed (...".
+    const bool isFallback = warning.find(": Delaunay refinement failed") != std::string::npos;
+    if (isFallback && ++fallbackWarnings > MaximumFallbackWarnings)
+    {
+      continue;
+    }
+    vtkWarningWithObjectMacro(filter, << warning);
+  }
+  if (fallbackWarnings > MaximumFallbackWarnings)
+  {
+    vtkWarningWithObjectMacro(filter, << "Delaunay refinement fell back to templates in "
+                                      << fallbackWarnings << " partition refinements; "
+                                      << fallbackWarnings - MaximumFallbackWarnings
+                                      << " of these warnings are not shown.");
+  }
 }
 
 void fillOutput(
@@ -246,8 +249,12 @@ void fillOutput(
 vtkCoarseGrainedMeshAdaptation::vtkCoarseGrainedMeshAdaptation()
   : NumberOfPartitions(1024)
   , NumberOfIterations(1)
+  , Method(TEMPLATE)
   , MaximumEdgeLength(0.0)
   , EdgeLengthFactor(0.5)
+  , MaximumVolume(0.0)
+  , VolumeFactor(0.1)
+  , RadiusEdgeRatio(2.0)
   , NumberOfThreads(0)
   , RegionArrayName(nullptr)
   , ColoringAlgorithm(GREEDY_LEAST_USED)
@@ -277,6 +284,25 @@ int vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(const char* name)
     if (std::strcmp(name, ColoringAlgorithmNames[algorithm]) == 0)
     {
       return algorithm;
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkCoarseGrainedMeshAdaptation::MethodToName(int method)
+{
+  return (method >= TEMPLATE && method <= DELAUNAY) ? MethodNames[method] : nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkCoarseGrainedMeshAdaptation::MethodFromName(const char* name)
+{
+  for (int method = TEMPLATE; name && method <= DELAUNAY; ++method)
+  {
+    if (std::strcmp(name, MethodNames[method]) == 0)
+    {
+      return method;
     }
   }
   return -1;
@@ -347,10 +373,7 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
 
   cgmesh::AdaptationResult result;
   status = cgmesh::adaptMesh(inputMesh, makeOptions(this), result);
-  for (const std::string& warning : result.warnings)
-  {
-    vtkWarningMacro(<< warning);
-  }
+  reportWarnings(this, result);
   if (!status.ok())
   {
     vtkErrorMacro(<< "Mesh adaptation failed: " << status.message());
@@ -364,9 +387,8 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
 
   fillOutput(input, result, output);
   this->UpdateProgress(0.9);
-  const double qualitySeconds = addQualityArrays(output, result.numberOfThreads);
-  addFieldData(result, this->GetColoringAlgorithmName(), qualitySeconds, secondsSince(start),
-    output->GetFieldData());
+  const double qualitySeconds = cgmesh::addTetQualityArrays(output, result.numberOfThreads);
+  addFieldData(result, this, qualitySeconds, secondsSince(start), output->GetFieldData());
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -377,8 +399,12 @@ void vtkCoarseGrainedMeshAdaptation::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfPartitions: " << this->NumberOfPartitions << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+  os << indent << "Method: " << this->Method << " (" << this->GetMethodName() << ")\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "EdgeLengthFactor: " << this->EdgeLengthFactor << "\n";
+  os << indent << "MaximumVolume: " << this->MaximumVolume << "\n";
+  os << indent << "VolumeFactor: " << this->VolumeFactor << "\n";
+  os << indent << "RadiusEdgeRatio: " << this->RadiusEdgeRatio << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)")
      << "\n";

@@ -5,21 +5,31 @@
  * The input (linear tetrahedra only) is partitioned with METIS into NumberOfPartitions parts, or,
  * with PartitionByRegion, along the regions of RegionArrayName into PartitionsPerRegion parts
  * each. The partition graph (partitions sharing a vertex) is coloured with ColoringAlgorithm, and
- * for each of NumberOfIterations passes the partitions of one colour are refined concurrently:
- * edges longer than the threshold are split by conforming templates, and interface splits are
- * handed to the neighbours that follow.
- * The threshold is MaximumEdgeLength when positive, else EdgeLengthFactor times the input's mean
- * edge length.
+ * for each of NumberOfIterations passes the partitions of one colour are refined concurrently by
+ * the serial kernel chosen with Method, and interface splits are handed to the neighbours that
+ * follow.
+ *
+ * Template: edges longer than the threshold are split by conforming templates. The threshold is
+ * MaximumEdgeLength when positive, else EdgeLengthFactor times the input's mean edge length.
+ *
+ * Delaunay: the volume bound V is MaximumVolume when positive, else VolumeFactor times the input's
+ * mean tet volume. Partition-interface and material-interface edges are split by templates down
+ * to the edge length of the regular tetrahedron of volume V, (6 sqrt(2) V)^(1/3); TetGen then
+ * refines each partition's interior with its boundary faces kept (switches r, Y, q with
+ * RadiusEdgeRatio, a with V). A partition on which TetGen fails is refined by templates instead,
+ * with a warning naming it.
  *
  * The output is one conforming tetrahedral grid. Input cell data is copied to every child cell and
  * input point data is interpolated linearly onto new points. The output also holds the cell arrays
  * PartitionId, ColorId, EdgeRatio and MinDihedralAngle (vtkMeshQuality, degrees) and field data
- * with the colour, partition and thread counts, the threshold, the colouring (ColoringAlgorithm,
- * by name), the colour populations (PartitionsPerColor and CellsPerColor, one tuple per colour),
- * ColorBalance (largest colour over the mean, in partitions) and the seconds spent per phase
- * (PartitionSeconds, GraphSeconds, ColorSeconds, HealSeconds, AdaptSeconds, PostSeconds,
- * MergeSeconds, QualitySeconds, TotalSeconds).
- * The output does not depend on NumberOfThreads.
+ * with the colour, partition and thread counts, the (interface) edge length threshold, the method
+ * (Method, by name), VolumeBound, DelaunayFallbacks, FallbackPartitions (one tuple per fallback)
+ * and TetGenPoints (all 0 or empty for Template), the
+ * colouring (ColoringAlgorithm, by name), the colour populations (PartitionsPerColor and
+ * CellsPerColor, one tuple per colour), ColorBalance (largest colour over the mean, in partitions)
+ * and the seconds spent per phase (PartitionSeconds, GraphSeconds, ColorSeconds, HealSeconds,
+ * AdaptSeconds, PostSeconds, ImproveSeconds, MergeSeconds, QualitySeconds, TotalSeconds). The
+ * output does not depend on NumberOfThreads.
  */
 #ifndef vtkCoarseGrainedMeshAdaptation_h
 #define vtkCoarseGrainedMeshAdaptation_h
@@ -54,9 +64,44 @@ public:
   vtkGetMacro(NumberOfIterations, int);
   ///@}
 
+  /**
+   * Serial refinement kernels run on the partitions.
+   */
+  enum Methods
+  {
+    TEMPLATE = 0, // split long edges by conforming templates
+    DELAUNAY = 1  // templates on interfaces, TetGen inside partitions
+  };
+
   ///@{
   /**
-   * Edges longer than this absolute length are split. Not used when not positive (default 0).
+   * Refinement kernel, one of Methods. Default TEMPLATE.
+   */
+  vtkSetClampMacro(Method, int, TEMPLATE, DELAUNAY);
+  vtkGetMacro(Method, int);
+  void SetMethodToTemplate() { this->SetMethod(TEMPLATE); }
+  void SetMethodToDelaunay() { this->SetMethod(DELAUNAY); }
+  ///@}
+
+  /**
+   * Name of the current method: "template" or "delaunay" (the names of the command line's --method
+   * option).
+   */
+  const char* GetMethodName() { return MethodToName(this->Method); }
+
+  ///@{
+  /**
+   * Conversion between Methods values and their names; MethodToName returns nullptr for a value
+   * out of range, MethodFromName returns -1 for an unknown name.
+   */
+  static const char* MethodToName(int method);
+  static int MethodFromName(const char* name);
+  ///@}
+
+  ///@{
+  /**
+   * Template: edges longer than this absolute length are split. Not used when not positive (default
+   * 0).
    */
   vtkSetMacro(MaximumEdgeLength, double);
   vtkGetMacro(MaximumEdgeLength, double);
@@ -64,11 +109,37 @@ public:
 
   ///@{
   /**
-   * Split threshold as a fraction of the input's mean edge length, used when MaximumEdgeLength is
-   * not positive. Default 0.5.
+   * Template: split threshold as a fraction of the input's mean edge length, used when
+   * MaximumEdgeLength is not positive. Default 0.5.
    */
   vtkSetClampMacro(EdgeLengthFactor, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(EdgeLengthFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Delaunay: TetGen's absolute volume bound (switch a). Not used when not positive (default 0).
+   */
+  vtkSetMacro(MaximumVolume, double);
+  vtkGetMacro(MaximumVolume, double);
+  ///@}
+
+  ///@{
+  /**
+   * Delaunay: volume bound as a fraction of the input's mean tet volume, used when MaximumVolume
+   * is not positive. Default 0.1.
+   */
+  vtkSetClampMacro(VolumeFactor, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(VolumeFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Delaunay: TetGen's radius-edge ratio bound (switch q); smaller values ask for better tets and
+   * more points. Clamped to at least 1. Default 2.
+   */
+  vtkSetClampMacro(RadiusEdgeRatio, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(RadiusEdgeRatio, double);
   ///@}
 
   ///@{
@@ -167,8 +238,12 @@ protected:
 
   int NumberOfPartitions;
   int NumberOfIterations;
+  int Method;
   double MaximumEdgeLength;
   double EdgeLengthFactor;
+  double MaximumVolume;
+  double VolumeFactor;
+  double RadiusEdgeRatio;
   int NumberOfThreads;
   char* RegionArrayName;
   int ColoringAlgorithm;

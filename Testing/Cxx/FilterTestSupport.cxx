@@ -82,14 +82,6 @@ bool relativelyEqual(double first, double second, double tolerance)
   return std::abs(first - second) <= tolerance * std::max(std::abs(first), std::abs(second));
 }
 
-cgmesh::MeshReport inspectGrid(vtkUnstructuredGrid* grid)
-{
-  cgmesh::TetMesh mesh;
-  cgmesh::Status status = cgmesh::convertToTetMesh(grid, std::string(), mesh);
-  CGMESH_CHECK(status.ok(), status.message());
-  return cgmesh::inspectMesh(mesh);
-}
-
 bool sameBytes(vtkDataArray* first, vtkDataArray* second)
 {
   if (!first || !second || first->GetDataType() != second->GetDataType() ||
@@ -123,6 +115,14 @@ bool sameArrays(vtkFieldData* first, vtkFieldData* second, std::string& differen
 }
 
 } // namespace
+
+cgmesh::MeshReport inspectGrid(vtkUnstructuredGrid* grid, const std::string& regionArrayName)
+{
+  cgmesh::TetMesh mesh;
+  cgmesh::Status status = cgmesh::convertToTetMesh(grid, regionArrayName, mesh);
+  CGMESH_CHECK(status.ok(), status.message());
+  return cgmesh::inspectMesh(mesh);
+}
 
 vtkSmartPointer<vtkUnstructuredGrid> makeCubeWithTestArrays(int cellsPerSide)
 {
@@ -167,7 +167,10 @@ vtkSmartPointer<vtkUnstructuredGrid> runFilter(
   filter->SetInputData(input);
   filter->SetNumberOfPartitions(settings.numberOfPartitions);
   filter->SetNumberOfIterations(settings.numberOfIterations);
+  filter->SetMethod(settings.method);
   filter->SetEdgeLengthFactor(settings.edgeLengthFactor);
+  filter->SetVolumeFactor(settings.volumeFactor);
+  filter->SetRadiusEdgeRatio(settings.radiusEdgeRatio);
   filter->SetNumberOfThreads(settings.numberOfThreads);
   filter->SetRegionArrayName(
     settings.regionArrayName.empty() ? nullptr : settings.regionArrayName.c_str());
@@ -184,8 +187,8 @@ vtkSmartPointer<vtkUnstructuredGrid> runFilter(
 
 void checkConformity(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
 {
-  const cgmesh::MeshReport inputReport = inspectGrid(input);
-  const cgmesh::MeshReport report = inspectGrid(output);
+  const cgmesh::MeshReport inputReport = inspectGrid(input, std::string());
+  const cgmesh::MeshReport report = inspectGrid(output, std::string());
   CGMESH_CHECK(report.isValid(), report.describeProblems());
   CGMESH_CHECK(report.overSharedFaces == 0, report.overSharedFaces << " faces in 3+ tets");
   CGMESH_CHECK(report.misorientedFacePairs == 0, report.misorientedFacePairs << " misoriented");
@@ -199,9 +202,6 @@ void checkConformity(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
   CGMESH_CHECK(relativelyEqual(report.boundaryArea, inputReport.boundaryArea, 1e-9),
     "boundary area " << report.boundaryArea << " != input " << inputReport.boundaryArea);
 }
-
-namespace
-{
 
 void checkLinearField(vtkUnstructuredGrid* output)
 {
@@ -218,6 +218,9 @@ void checkLinearField(vtkUnstructuredGrid* output)
   }
   CGMESH_CHECK(wrongPoints == 0, wrongPoints << " points with a wrong interpolated LinearField");
 }
+
+namespace
+{
 
 // Every child lies inside its parent, carries the parent's Material, and the children of a
 // parent fill it exactly.
@@ -287,7 +290,8 @@ void checkColorPopulations(vtkUnstructuredGrid* output, int colors, int partitio
   auto* stringArray =
     vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("ColoringAlgorithm"));
   CGMESH_CHECK(stringArray && stringArray->GetNumberOfValues() == 1 &&
-      vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(stringArray->GetValue(0)) >= 0,
+      vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(stringArray->GetValue(0).c_str()) >=
+        0,
     "field data ColoringAlgorithm missing or not a colouring name");
   const std::vector<vtkIdType> partitionsPerColor = fieldValues(output, "PartitionsPerColor");
   const std::vector<vtkIdType> cellsPerColor = fieldValues(output, "CellsPerColor");
@@ -324,6 +328,8 @@ void checkColorPopulations(vtkUnstructuredGrid* output, int colors, int partitio
     "ColorBalance " << balance << " is not the largest colour over the mean");
 }
 
+} // namespace
+
 void checkOutputArrays(vtkUnstructuredGrid* output)
 {
   const double partitions = fieldValue(output, "NumberOfPartitions");
@@ -331,8 +337,9 @@ void checkOutputArrays(vtkUnstructuredGrid* output)
   CGMESH_CHECK(partitions >= 1 && colors >= 1, "partition/colour counts not positive");
   CGMESH_CHECK(fieldValue(output, "NumberOfThreads") >= 1, "thread count not positive");
   CGMESH_CHECK(fieldValue(output, "EdgeLengthThreshold") > 0, "threshold not positive");
-  for (const char* phase : { "PartitionSeconds", "GraphSeconds", "ColorSeconds", "HealSeconds",
-         "AdaptSeconds", "PostSeconds", "MergeSeconds", "QualitySeconds", "TotalSeconds" })
+  for (const char* phase :
+    { "PartitionSeconds", "GraphSeconds", "ColorSeconds", "HealSeconds", "AdaptSeconds",
+      "PostSeconds", "ImproveSeconds", "MergeSeconds", "QualitySeconds", "TotalSeconds" })
   {
     CGMESH_CHECK(fieldValue(output, phase) >= 0, phase << " negative");
   }
@@ -341,9 +348,15 @@ void checkOutputArrays(vtkUnstructuredGrid* output)
   checkArrayRange(output, "EdgeRatio", 1.0, 1e6);
   checkArrayRange(output, "MinDihedralAngle", 1e-6, 180.0);
   checkColorPopulations(output, static_cast<int>(colors), static_cast<int>(partitions));
+  auto* method = vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("Method"));
+  CGMESH_CHECK(method && method->GetNumberOfValues() == 1 &&
+      vtkCoarseGrainedMeshAdaptation::MethodFromName(method->GetValue(0).c_str()) >= 0,
+    "field data Method missing or not a method name");
+  for (const char* name : { "VolumeBound", "DelaunayFallbacks", "TetGenPoints" })
+  {
+    CGMESH_CHECK(fieldValue(output, name) >= 0, name << " negative");
+  }
 }
-
-} // namespace
 
 double fieldValue(vtkUnstructuredGrid* output, const char* name)
 {

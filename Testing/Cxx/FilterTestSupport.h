@@ -2,6 +2,7 @@
 #ifndef cgmesh_FilterTestSupport_h
 #define cgmesh_FilterTestSupport_h
 
+#include "MeshValidation.h"
 #include "vtkCoarseGrainedMeshAdaptation.h"
 #include "vtkSmartPointer.h"
 
@@ -37,7 +38,10 @@ struct FilterSettings
 {
   int numberOfPartitions = 1;
   int numberOfIterations = 2;
+  int method = vtkCoarseGrainedMeshAdaptation::TEMPLATE;
   double edgeLengthFactor = 0.25; // splits every edge of a Kuhn cube in both iterations
+  double volumeFactor = 0.1;      // Delaunay
+  double radiusEdgeRatio = 2.0;   // Delaunay
   int numberOfThreads = 1;
   std::string regionArrayName;
   int coloringAlgorithm = vtkCoarseGrainedMeshAdaptation::GREEDY_LEAST_USED;
@@ -57,6 +61,16 @@ void checkConformity(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
 // volumes summing to the parent's, Material copied, output arrays present and in range, colour
 // populations matching the PartitionId and ColorId arrays.
 void checkDataTransfer(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
+
+// The parts of checkDataTransfer that hold for any method (a Delaunay child need not lie inside
+// the parent tet it is attributed to): LinearField exact on every output point, and the output
+// arrays and field data present and consistent.
+void checkLinearField(vtkUnstructuredGrid* output);
+void checkOutputArrays(vtkUnstructuredGrid* output);
+
+// Validity figures of `grid`, with region volumes and the region-interface area when
+// `regionArrayName` is not empty.
+cgmesh::MeshReport inspectGrid(vtkUnstructuredGrid* grid, const std::string& regionArrayName);
 
 // Points, connectivity, cell types and every point and cell array bit-identical.
 bool identicalGrids(

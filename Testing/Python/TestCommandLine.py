@@ -1,6 +1,6 @@
 """Drives the cgmesh executable: generate, refine (XML and legacy files, --stats, every colouring,
-partitioning by region), check, --help, and the error paths (one line on stderr, non-zero exit,
-no output file)."""
+partitioning by region, the Delaunay method), the serial tetgen baseline, check, --help, and the
+error paths (one line on stderr, non-zero exit, no output file)."""
 import argparse
 import json
 import os
@@ -39,12 +39,18 @@ COLORINGS = ("greedy", "greedy-lu", "iterative", "recoloring")
 
 
 def test_help(cgmesh):
-    for command in (["--help"], ["refine", "--help"], ["generate", "--help"], ["check", "--help"]):
+    for command in (["--help"], ["refine", "--help"], ["generate", "--help"], ["check", "--help"],
+                    ["tetgen", "--help"]):
         result = run(cgmesh, *command)
         check(result.returncode == 0 and "usage" in result.stdout, "help for %s" % command)
+    check("tetgen" in run(cgmesh, "--help").stdout, "cgmesh --help does not list tetgen")
     refine_help = run(cgmesh, "refine", "--help").stdout
-    for text in ("--coloring", "--partition-by-region", "--partitions-per-region", *COLORINGS):
+    for text in ("--coloring", "--partition-by-region", "--partitions-per-region", *COLORINGS,
+                 "--method", "delaunay", "--max-volume", "--volume-factor", "--radius-edge-ratio"):
         check(text in refine_help, "refine --help does not mention " + text)
+    tetgen_help = run(cgmesh, "tetgen", "--help").stdout
+    for text in ("--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "rQq"):
+        check(text in tetgen_help, "tetgen --help does not mention " + text)
 
 
 def check_color_populations(statistics, description):
@@ -89,6 +95,10 @@ def test_generate_refine_check(cgmesh, scratch):
         check(phase in statistics["seconds"], "stats lacks seconds of " + phase)
     check(statistics.get("coloring") == "greedy-lu", "default colouring in stats")
     check(statistics.get("partitionByRegion") is False, "partitionByRegion default in stats")
+    check(statistics.get("method") == "template", "default method in stats")
+    check(statistics.get("volumeBound") == 0 and statistics.get("delaunayFallbacks") == 0
+          and statistics.get("fallbackPartitions") == [] and statistics.get("tetgenPoints") == 0,
+          "template run: Delaunay figures in stats are not zero")
     check_color_populations(statistics, "default colouring")
     for text in ("coloring", "partitions per color", "cells per color", "color balance"):
         check(text in result.stdout, "the table lacks " + text)
@@ -161,6 +171,96 @@ def test_partition_by_region(cgmesh, scratch):
     check(result.returncode == 0, "check the refined FinFET: " + result.stdout)
 
 
+def region_volumes(cgmesh, mesh):
+    """{region id: volume} from `cgmesh check --region-array Material`, and the exit status."""
+    result = run(cgmesh, "check", mesh, "--region-array", "Material")
+    volumes = {}
+    for line in result.stdout.splitlines():
+        words = line.split()
+        if len(words) == 3 and words[0] == "region" and words[1].lstrip("-").isdigit():
+            volumes[int(words[1])] = float(words[2])
+    return volumes, result.returncode
+
+
+def test_delaunay(cgmesh, scratch):
+    """--method delaunay on the FinFET: valid, regions kept, the same file for 1 and 2 threads,
+    the Delaunay figures in the table and the stats."""
+    finfet = os.path.join(scratch, "finfet.vtu")
+    outputs = []
+    for threads in ("1", "2"):
+        refined = os.path.join(scratch, "finfet-delaunay-%s.vtu" % threads)
+        stats = os.path.join(scratch, "finfet-delaunay-%s.json" % threads)
+        result = run(cgmesh, "refine", finfet, refined, "--region-array", "Material",
+                     "--partitions", "8", "--method", "delaunay", "--volume-factor", "0.3",
+                     "--radius-edge-ratio", "1.8", "--threads", threads, "--stats", stats)
+        check(result.returncode == 0, "refine --method delaunay: " + result.stderr)
+        if result.returncode != 0:
+            return
+        for text in ("method", "delaunay", "volume bound", "tetgen points", "delaunay fallbacks"):
+            check(text in result.stdout, "the Delaunay table lacks " + text)
+        with open(stats) as handle:
+            statistics = json.load(handle)
+        check(statistics["method"] == "delaunay", "method in stats")
+        check(statistics["volumeBound"] > 0 and statistics["tetgenPoints"] > 0,
+              "volumeBound/tetgenPoints in stats")
+        check(len(statistics["fallbackPartitions"]) == statistics["delaunayFallbacks"],
+              "fallbackPartitions does not list every fallback")
+        check(statistics["output"]["cells"] > 2 * statistics["input"]["cells"], "hardly refined")
+        with open(refined, "rb") as handle:
+            outputs.append(handle.read())
+    check(outputs[0] == outputs[1], "Delaunay output files of 1 and 2 threads differ")
+    before, _ = region_volumes(cgmesh, finfet)
+    after, status = region_volumes(cgmesh, refined)
+    check(status == 0, "check the Delaunay-refined FinFET")
+    check(len(before) > 1 and before.keys() == after.keys() and all(
+        abs(after[region] - volume) <= 1e-9 * volume for region, volume in before.items()),
+        "Delaunay region volumes %s != input %s" % (after, before))
+
+    cube = os.path.join(scratch, "cube.vtu")
+    stats = os.path.join(scratch, "cube-delaunay.json")
+    result = run(cgmesh, "refine", cube, os.path.join(scratch, "cube-delaunay.vtu"),
+                 "--partitions", "4", "--method", "delaunay", "--max-volume", "0.0005",
+                 "--stats", stats)
+    check(result.returncode == 0, "refine --max-volume: " + result.stderr)
+    with open(stats) as handle:
+        check(json.load(handle)["volumeBound"] == 0.0005, "--max-volume is not the bound")
+
+
+def test_tetgen(cgmesh, scratch):
+    """The serial baseline on the FinFET: valid, every region's volume kept, quality arrays and
+    stats written."""
+    finfet = os.path.join(scratch, "finfet.vtu")
+    refined = os.path.join(scratch, "finfet-tetgen.vtu")
+    stats = os.path.join(scratch, "finfet-tetgen.json")
+    before, _ = region_volumes(cgmesh, finfet)
+    volume = sum(before.values())
+    result = run(cgmesh, "tetgen", finfet, refined, "--max-volume", str(0.3 * volume / 3000),
+                 "--radius-edge-ratio", "2", "--region-array", "Material", "--stats", stats)
+    check(result.returncode == 0, "tetgen: " + result.stderr)
+    if result.returncode != 0:
+        return
+    check("tetgen" in result.stdout and "rQq2a" in result.stdout, "tetgen table: " + result.stdout)
+    with open(stats) as handle:
+        statistics = json.load(handle)
+    for phase in ("tetgen", "quality", "read", "write", "total"):
+        check(phase in statistics["seconds"], "tetgen stats lack seconds of " + phase)
+    check(statistics["output"]["cells"] > 2 * statistics["input"]["cells"], "tetgen: no refinement")
+    check(statistics["tetgenPoints"] > 0 and statistics["switches"].startswith("rQq2a"),
+          "tetgen stats: points/switches")
+    after, status = region_volumes(cgmesh, refined)
+    check(status == 0, "check the TetGen-refined FinFET")
+    check(before.keys() == after.keys() and all(
+        abs(after[region] - volume) <= 1e-9 * volume for region, volume in before.items()),
+        "TetGen region volumes %s != input %s" % (after, before))
+    reader_check = subprocess.run(
+        [sys.executable, "-c", "import sys\nfrom vtkmodules.vtkIOXML import "
+         "vtkXMLUnstructuredGridReader\nr = vtkXMLUnstructuredGridReader()\n"
+         "r.SetFileName(sys.argv[1])\nr.Update()\ncd = r.GetOutput().GetCellData()\n"
+         "sys.exit(0 if cd.GetArray('EdgeRatio') and cd.GetArray('MinDihedralAngle') "
+         "and cd.GetArray('Material') else 1)", refined], capture_output=True, text=True)
+    check(reader_check.returncode == 0, "tetgen output lacks EdgeRatio/MinDihedralAngle/Material")
+
+
 def expect_error(cgmesh, scratch, description, arguments, output, exit_status=None):
     result = run(cgmesh, *arguments)
     lines = [line for line in result.stderr.strip().splitlines()
@@ -193,6 +293,9 @@ def test_errors(cgmesh, scratch):
         ("unwritable output", ["refine", cube, os.path.join(scratch, "failed.vtu", "x.vtu")]),
         ("bad cube size", ["generate", "cube", "-2", out]),
         ("check non-tetrahedral", ["check", hexahedron]),
+        ("tetgen non-tetrahedral input", ["tetgen", hexahedron, out, "--max-volume", "0.01"]),
+        ("tetgen missing region array", ["tetgen", cube, out, "--max-volume", "0.01",
+                                         "--region-array", "NoSuchArray"]),
     ]
     for description, arguments in cases:
         expect_error(cgmesh, scratch, description, arguments, out)
@@ -210,6 +313,18 @@ def test_errors(cgmesh, scratch):
                                                 "--partition-by-region"]),
         ("zero partitions per region", ["refine", cube, out, "--region-array", "Material",
                                         "--partition-by-region", "--partitions-per-region", "0"]),
+        ("unknown method", ["refine", cube, out, "--method", "voronoi"]),
+        ("volume bound with templates", ["refine", cube, out, "--max-volume", "0.01"]),
+        ("edge length with Delaunay", ["refine", cube, out, "--method", "delaunay",
+                                       "--edge-length-factor", "0.5"]),
+        ("both volume bounds", ["refine", cube, out, "--method", "delaunay", "--max-volume",
+                                "0.01", "--volume-factor", "0.1"]),
+        ("radius-edge ratio below 1", ["refine", cube, out, "--method", "delaunay",
+                                       "--radius-edge-ratio", "0.5"]),
+        ("tetgen without --max-volume", ["tetgen", cube, out]),
+        ("tetgen with a zero bound", ["tetgen", cube, out, "--max-volume", "0"]),
+        ("tetgen unknown option", ["tetgen", cube, out, "--max-volume", "0.01", "--threads", "2"]),
+        ("tetgen without OUT", ["tetgen", cube, "--max-volume", "0.01"]),
     ]
     for description, arguments in usage_cases:
         expect_error(cgmesh, scratch, description, arguments, out, exit_status=2)
@@ -230,6 +345,8 @@ def main():
     test_generate_refine_check(options.cgmesh, options.scratch)
     test_colorings(options.cgmesh, options.scratch)
     test_partition_by_region(options.cgmesh, options.scratch)
+    test_delaunay(options.cgmesh, options.scratch)
+    test_tetgen(options.cgmesh, options.scratch)
     test_errors(options.cgmesh, options.scratch)
     if FAILURES:
         print("%d checks failed" % len(FAILURES), file=sys.stderr)

@@ -1,6 +1,6 @@
 """Run with pvbatch: loads the built CoarseGrainedMesher plugin through paraview.simple and runs
 the filter on a tetrahedralized Wavelet, checking counts and arrays, with the colouring chosen by
-its label in the drop-down."""
+its label in the drop-down; then the Delaunay method, chosen by its label, on a small cube."""
 import argparse
 import sys
 
@@ -14,6 +14,35 @@ def check(condition, message):
     if not condition:
         FAILURES.append(message)
         print("check failed: " + message, file=sys.stderr)
+
+
+def test_delaunay():
+    """Method chosen by its drop-down label on a tetrahedralized 10^3-voxel cube."""
+    cube = Tetrahedralize(Input=Wavelet(WholeExtent=[0, 10, 0, 10, 0, 10]))
+    adaptation = CoarseGrainedMeshAdaptation(Input=cube)  # noqa: F821 (from LoadPlugin)
+    check(adaptation.Method == "Template", "Method default: %s" % adaptation.Method)
+    labels = adaptation.GetProperty("Method").Available
+    check(list(labels) == ["Template", "Delaunay"], "Method labels: %s" % labels)
+    check(adaptation.MaximumVolume == 0 and adaptation.VolumeFactor == 0.1
+          and adaptation.RadiusEdgeRatio == 2.0, "Delaunay property defaults")
+    adaptation.Method = "Delaunay"
+    adaptation.NumberOfPartitions = 16
+    adaptation.VolumeFactor = 0.2
+    adaptation.NumberOfThreads = 2
+    adaptation.UpdatePipeline()
+
+    source = servermanager.Fetch(cube)
+    refined = servermanager.Fetch(adaptation)
+    check(refined.GetNumberOfCells() > 2 * source.GetNumberOfCells(),
+          "Delaunay: %d -> %d cells" % (source.GetNumberOfCells(), refined.GetNumberOfCells()))
+    method = refined.GetFieldData().GetAbstractArray("Method")
+    check(method is not None and method.GetValue(0) == "delaunay",
+          "the filter did not run the method chosen by label")
+    for name in ("VolumeBound", "DelaunayFallbacks", "TetGenPoints", "FallbackPartitions"):
+        check(refined.GetFieldData().GetArray(name) is not None, "field data %s missing" % name)
+    check(refined.GetFieldData().GetArray("VolumeBound").GetValue(0) > 0, "VolumeBound not > 0")
+    check(refined.GetPointData().GetArray("RTData") is not None, "Delaunay: point data lost")
+    print("Delaunay: %d -> %d cells" % (source.GetNumberOfCells(), refined.GetNumberOfCells()))
 
 
 def main():
@@ -61,6 +90,7 @@ def main():
     check(coloring is not None and coloring.GetValue(0) == "recoloring",
           "the filter did not run the colouring chosen by label")
 
+    test_delaunay()
     if FAILURES:
         print("%d checks failed" % len(FAILURES), file=sys.stderr)
         return 1

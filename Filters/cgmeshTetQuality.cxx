@@ -1,0 +1,62 @@
+#include "cgmeshTetQuality.h"
+
+#include "ParallelFor.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkMeshQuality.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkTetra.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+
+namespace cgmesh
+{
+
+double addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const vtkIdType numberOfCells = grid->GetNumberOfCells();
+  vtkNew<vtkDoubleArray> edgeRatio;
+  edgeRatio->SetName("EdgeRatio");
+  edgeRatio->SetNumberOfValues(numberOfCells);
+  vtkNew<vtkDoubleArray> minDihedralAngle;
+  minDihedralAngle->SetName("MinDihedralAngle");
+  minDihedralAngle->SetNumberOfValues(numberOfCells);
+
+  constexpr vtkIdType CellsPerBlock = 16384;
+  const vtkIdType blocks = (numberOfCells + CellsPerBlock - 1) / CellsPerBlock;
+  vtkPoints* points = grid->GetPoints();
+  vtkCellArray* cells = grid->GetCells();
+  // Each block writes only its own cells' values, so the blocks need no synchronisation.
+  runParallel(resolveThreadCount(threads), blocks,
+    [&](std::int64_t block)
+    {
+      vtkNew<vtkTetra> tetra;
+      vtkNew<vtkIdList> corners;
+      double coordinates[3];
+      const vtkIdType end = std::min(numberOfCells, (block + 1) * CellsPerBlock);
+      for (vtkIdType cellId = block * CellsPerBlock; cellId < end; ++cellId)
+      {
+        cells->GetCellAtId(cellId, corners); // the id-list overload is safe to call concurrently
+        for (vtkIdType corner = 0; corner < 4; ++corner)
+        {
+          points->GetPoint(corners->GetId(corner), coordinates);
+          tetra->GetPoints()->SetPoint(corner, coordinates);
+        }
+        edgeRatio->SetValue(cellId, vtkMeshQuality::TetEdgeRatio(tetra));
+        minDihedralAngle->SetValue(cellId, vtkMeshQuality::TetMinAngle(tetra));
+      }
+    });
+  grid->GetCellData()->AddArray(edgeRatio);
+  grid->GetCellData()->AddArray(minDihedralAngle);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace cgmesh
