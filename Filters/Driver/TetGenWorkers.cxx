@@ -9,6 +9,7 @@
 #include <cstring>
 #include <new>
 #include <sys/socket.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -261,6 +262,12 @@ std::string TetGenWorkerPool::run(
   {
     return "could not start a TetGen worker process";
   }
+  // TetGen can also loop forever on some inputs: a call that takes far longer than its size
+  // warrants is abandoned (the limit applies to each receive).
+  timeval limit;
+  limit.tv_sec = static_cast<time_t>(30.0 + 0.002 * in.numberoftetrahedra);
+  limit.tv_usec = 0;
+  ::setsockopt(worker.socket, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof(limit));
   std::int32_t ok = 0;
   const bool exchanged =
     sendArray(worker.socket, switches.c_str(), static_cast<std::int64_t>(switches.size() + 1)) &&
@@ -283,9 +290,12 @@ std::string TetGenWorkerPool::run(
       return failure;
     }
   }
-  // The worker died (an assertion in TetGen aborts it) or the exchange broke: replace it.
+  // The worker died (an assertion in TetGen aborts it), hung, or the exchange broke: replace it.
+  const bool timedOut = errno == EAGAIN || errno == EWOULDBLOCK;
   this->stop(worker, true);
-  return "the TetGen process stopped unexpectedly (TetGen aborted on this partition)";
+  return timedOut ? "TetGen took longer than " + std::to_string(limit.tv_sec) +
+      " s on this partition and was stopped"
+                  : "the TetGen process stopped unexpectedly (TetGen aborted on this partition)";
 }
 
 } // namespace cgmesh
