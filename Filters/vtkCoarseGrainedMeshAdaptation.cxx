@@ -19,6 +19,7 @@
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -168,6 +169,9 @@ void addFieldData(const cgmesh::AdaptationResult& result, vtkCoarseGrainedMeshAd
   addColorPopulation(fieldData, "PartitionsPerColor", result.partitionsPerColor);
   addColorPopulation(fieldData, "CellsPerColor", result.cellsPerColor);
   addFieldValue(fieldData, "ColorBalance", result.colorBalance);
+  addFieldValue(fieldData, "EdgeRemovals", static_cast<double>(result.edgeRemovals));
+  addFieldValue(fieldData, "FaceSwaps", static_cast<double>(result.faceSwaps));
+  addFieldValue(fieldData, "VertexMoves", static_cast<double>(result.vertexMoves));
   const cgmesh::PhaseSeconds& seconds = result.seconds;
   addFieldValue(fieldData, "PartitionSeconds", seconds.partition);
   addFieldValue(fieldData, "GraphSeconds", seconds.graph);
@@ -198,6 +202,8 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter)
   options.coloring = filter->GetColoringAlgorithmName();
   options.partitionByRegion = filter->GetPartitionByRegion();
   options.partitionsPerRegion = filter->GetPartitionsPerRegion();
+  options.improveQuality = filter->GetImproveQuality();
+  options.improvementPasses = filter->GetNumberOfImprovementPasses();
   // The driver calls both hooks on the calling thread only.
   options.progress = [filter](double fraction, const char*)
   {
@@ -241,6 +247,15 @@ void fillOutput(
   interpolatePointData(input->GetPointData(), result.provenance, output->GetPointData());
   output->GetCellData()->AddArray(makeCellIntArray("PartitionId", result.partitionOfCell));
   output->GetCellData()->AddArray(makeCellIntArray("ColorId", result.colorOfCell));
+  vtkNew<vtkUnsignedCharArray> nearFormerInterface;
+  nearFormerInterface->SetName("NearFormerInterface");
+  nearFormerInterface->SetNumberOfValues(static_cast<vtkIdType>(result.nearFormerInterface.size()));
+  for (size_t cellId = 0; cellId < result.nearFormerInterface.size(); ++cellId)
+  {
+    nearFormerInterface->SetValue(
+      static_cast<vtkIdType>(cellId), result.nearFormerInterface[cellId] ? 1 : 0);
+  }
+  output->GetCellData()->AddArray(nearFormerInterface);
 }
 
 } // namespace
@@ -260,6 +275,8 @@ vtkCoarseGrainedMeshAdaptation::vtkCoarseGrainedMeshAdaptation()
   , ColoringAlgorithm(GREEDY_LEAST_USED)
   , PartitionByRegion(false)
   , PartitionsPerRegion(1)
+  , ImproveQuality(true)
+  , NumberOfImprovementPasses(2)
 {
 }
 
@@ -412,4 +429,6 @@ void vtkCoarseGrainedMeshAdaptation::PrintSelf(ostream& os, vtkIndent indent)
      << this->GetColoringAlgorithmName() << ")\n";
   os << indent << "PartitionByRegion: " << (this->PartitionByRegion ? "on" : "off") << "\n";
   os << indent << "PartitionsPerRegion: " << this->PartitionsPerRegion << "\n";
+  os << indent << "ImproveQuality: " << (this->ImproveQuality ? "on" : "off") << "\n";
+  os << indent << "NumberOfImprovementPasses: " << this->NumberOfImprovementPasses << "\n";
 }

@@ -19,14 +19,25 @@
  * RadiusEdgeRatio, a with V). A partition on which TetGen fails is refined by templates instead,
  * with a warning naming it.
  *
+ * With ImproveQuality (default on), each partition's tets are improved after refinement, in the
+ * same colour loop: edge removal, 2->3 face swaps and Laplacian smoothing with rollback, applied to
+ * tets whose mean ratio 12 (3V)^(2/3) / sum of squared edge lengths (1 = regular tetrahedron) is
+ * below 0.5, and kept only when the worst mean ratio of the tets changed rises. Vertices on
+ * partition interfaces, on the domain boundary and on material interfaces stay fixed. A second
+ * sweep over box-shaped partitions that cut across the refinement partitions then improves the
+ * tets around the former partition interfaces too.
+ *
  * The output is one conforming tetrahedral grid. Input cell data is copied to every child cell and
  * input point data is interpolated linearly onto new points. The output also holds the cell arrays
- * PartitionId, ColorId, EdgeRatio and MinDihedralAngle (vtkMeshQuality, degrees) and field data
+ * PartitionId, ColorId, EdgeRatio and MinDihedralAngle (vtkMeshQuality, degrees) and
+ * NearFormerInterface (vtkUnsignedCharArray, 1 for a tet touching a vertex that lay on an interface
+ * between refinement partitions), and field data
  * with the colour, partition and thread counts, the (interface) edge length threshold, the method
  * (Method, by name), VolumeBound, DelaunayFallbacks, FallbackPartitions (one tuple per fallback)
  * and TetGenPoints (all 0 or empty for Template), the
  * colouring (ColoringAlgorithm, by name), the colour populations (PartitionsPerColor and
- * CellsPerColor, one tuple per colour), ColorBalance (largest colour over the mean, in partitions)
+ * CellsPerColor, one tuple per colour), ColorBalance (largest colour over the mean, in partitions),
+ * the improvement counts (EdgeRemovals, FaceSwaps, VertexMoves)
  * and the seconds spent per phase (PartitionSeconds, GraphSeconds, ColorSeconds, HealSeconds,
  * AdaptSeconds, PostSeconds, ImproveSeconds, MergeSeconds, QualitySeconds, TotalSeconds). The
  * output does not depend on NumberOfThreads.
@@ -144,6 +155,26 @@ public:
 
   ///@{
   /**
+   * Improve the tets after refinement (edge removal, face swaps, guarded smoothing; see the class
+   * description), keeping partition-interface, domain-boundary and material-interface vertices
+   * fixed. Default on.
+   */
+  vtkSetMacro(ImproveQuality, bool);
+  vtkGetMacro(ImproveQuality, bool);
+  vtkBooleanMacro(ImproveQuality, bool);
+  ///@}
+
+  ///@{
+  /**
+   * With ImproveQuality: sweeps of edge removal, face swaps and smoothing per partition, in each
+   * of the two improvement sweeps. Clamped to [0, 20]. Default 2.
+   */
+  vtkSetClampMacro(NumberOfImprovementPasses, int, 0, 20);
+  vtkGetMacro(NumberOfImprovementPasses, int);
+  ///@}
+
+  ///@{
+  /**
    * Number of OpenMP threads; 0 (default) uses all cores. The output does not depend on it.
    */
   vtkSetClampMacro(NumberOfThreads, int, 0, VTK_INT_MAX);
@@ -249,6 +280,8 @@ protected:
   int ColoringAlgorithm;
   bool PartitionByRegion;
   int PartitionsPerRegion;
+  bool ImproveQuality;
+  int NumberOfImprovementPasses;
 
 private:
   vtkCoarseGrainedMeshAdaptation(const vtkCoarseGrainedMeshAdaptation&) = delete;

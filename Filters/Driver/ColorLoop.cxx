@@ -209,7 +209,6 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
 {
   const ColorLoopSetup& setup = iteration.setup;
   Status status = Status::success();
-  auto start = Clock::now();
   if (setup.refine)
   {
     status = refineMembers(iteration, members, color, iterationIndex, state, result);
@@ -221,7 +220,7 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
 
   if (setup.improve)
   {
-    start = Clock::now();
+    const auto start = Clock::now();
     status = improveMembers(iteration, members, state, result);
     result.seconds.improve += secondsSince(start);
     if (!status.ok())
@@ -230,7 +229,7 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
     }
   }
 
-  start = Clock::now();
+  const auto start = Clock::now();
   status = numberNewPoints(iteration, members, state, result);
   result.seconds.post += secondsSince(start);
   return status;

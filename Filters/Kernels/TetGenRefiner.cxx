@@ -56,8 +56,8 @@ public:
                    : this->Refinement.newCoordinates.data() + 3 * (-id - 1);
   }
 
-  // Fills TetGen's input from the partition.
-  void prepareInput(tetgenio& in)
+  // Fills TetGen's input from the partition and the faces it must keep.
+  void prepareInput(tetgenio& in, const std::vector<Face>& keptFaces)
   {
     for (const Tet& tet : this->Partition.tets)
     {
@@ -94,21 +94,23 @@ public:
     // The faces to keep, each its own facet (a distinct marker): TetGen merges coplanar
     // neighbouring boundary triangles otherwise and may flip their shared edge, which the
     // partition across would not see.
-    std::vector<Face> boundaryFaces, regionInterfaceFaces;
-    findConstrainedFaces(this->Partition, boundaryFaces, regionInterfaceFaces);
-    boundaryFaces.insert(
-      boundaryFaces.end(), regionInterfaceFaces.begin(), regionInterfaceFaces.end());
-    in.numberoftrifaces = static_cast<int>(boundaryFaces.size());
-    in.trifacelist = new int[3 * boundaryFaces.size()];
-    in.trifacemarkerlist = new int[boundaryFaces.size()];
-    for (std::size_t f = 0; f < boundaryFaces.size(); ++f)
+    in.numberoftrifaces = static_cast<int>(keptFaces.size());
+    in.trifacelist = new int[3 * keptFaces.size()];
+    in.trifacemarkerlist = new int[keptFaces.size()];
+    this->KeptFaces.clear();
+    for (std::size_t f = 0; f < keptFaces.size(); ++f)
     {
+      std::array<int, 3> local;
       for (int k = 0; k < 3; ++k)
       {
-        in.trifacelist[3 * f + k] = this->Numbering.localOfId.at(boundaryFaces[f][k]);
+        local[k] = this->Numbering.localOfId.at(keptFaces[f][k]);
+        in.trifacelist[3 * f + k] = local[k];
       }
       in.trifacemarkerlist[f] = static_cast<int>(f) + 1;
+      std::sort(local.begin(), local.end());
+      this->KeptFaces.push_back(local);
     }
+    std::sort(this->KeptFaces.begin(), this->KeptFaces.end());
   }
 
   // Checks what TetGen returned: input points kept in place, positive tets, the same boundary
@@ -124,6 +126,7 @@ private:
   const RefinementContext& Context;
   const PartitionRefinement& Refinement;
   LocalNumbering Numbering;
+  std::vector<std::array<int, 3>> KeptFaces; // in local numbers, sorted
 };
 
 std::map<int, double> regionVolumes(const tetgenio& io)
@@ -209,7 +212,7 @@ std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) con
       return "TetGen returned an invalid or inverted tetrahedron";
     }
   }
-  if (hullAndInterfaceFaces(in) != hullAndInterfaceFaces(out))
+  if (hullAndInterfaceFaces(out) != this->KeptFaces)
   {
     return "TetGen changed the partition boundary or a material interface";
   }
@@ -295,9 +298,9 @@ std::string tetgenSwitches(const DelaunayParameters& parameters)
 }
 
 // Runs TetGen on the partition; an empty string means the partition now holds TetGen's mesh.
-std::string refineWithTetGen(PartitionMesh& partition, const RefinementContext& context,
-  const DelaunayParameters& parameters, const TetGenRunner& runTetGen,
-  PartitionRefinement& refinement, DelaunayOutcome& outcome)
+std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& keptFaces,
+  const RefinementContext& context, const DelaunayParameters& parameters,
+  const TetGenRunner& runTetGen, PartitionRefinement& refinement, DelaunayOutcome& outcome)
 {
   if (parameters.simulateFailure)
   {
@@ -305,7 +308,7 @@ std::string refineWithTetGen(PartitionMesh& partition, const RefinementContext& 
   }
   TetGenSession session(partition, context, refinement);
   tetgenio in, out;
-  session.prepareInput(in);
+  session.prepareInput(in, keptFaces);
   std::string failure = runTetGen(in, tetgenSwitches(parameters), out);
   if (failure.empty())
   {
@@ -336,9 +339,11 @@ Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext
   // TetGen may not touch these faces, so templates bring their edges down to the interface
   // length first, in rounds (a split edge's halves may still be too long). Neighbours take the
   // same decisions on shared edges and heal them from the outbox, round by round.
+  std::vector<Face> boundaryFaces, regionInterfaceFaces;
   for (int round = 0; round < MaximumTemplateRounds; ++round)
   {
-    std::vector<Face> boundaryFaces, regionInterfaceFaces;
+    boundaryFaces.clear();
+    regionInterfaceFaces.clear();
     findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
     EdgeSet constrainedEdges;
     addFaceEdges(boundaryFaces, constrainedEdges);
@@ -352,12 +357,21 @@ Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext
     }
     if (partition.tets.size() == tetsBefore)
     {
-      break;
+      break; // the faces found above are still the partition's
+    }
+    if (round + 1 == MaximumTemplateRounds)
+    {
+      boundaryFaces.clear();
+      regionInterfaceFaces.clear();
+      findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
     }
   }
+  const std::size_t boundaryCount = boundaryFaces.size();
+  std::vector<Face> keptFaces = boundaryFaces;
+  keptFaces.insert(keptFaces.end(), regionInterfaceFaces.begin(), regionInterfaceFaces.end());
 
   const std::string failure =
-    refineWithTetGen(partition, context, parameters, runTetGen, refinement, outcome);
+    refineWithTetGen(partition, keptFaces, context, parameters, runTetGen, refinement, outcome);
   if (failure.empty())
   {
     return Status::success();
@@ -366,10 +380,9 @@ Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext
   // posted, and neighbours will heal exactly those.
   outcome.fellBack = true;
   outcome.reason = failure;
-  std::vector<Face> boundaryFaces, regionInterfaceFaces;
-  findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
+  keptFaces.resize(boundaryCount); // the partition is as TetGen received it
   EdgeSet frozenEdges;
-  addFaceEdges(boundaryFaces, frozenEdges);
+  addFaceEdges(keptFaces, frozenEdges);
   return refinePartition(
     partition, context, EdgeMidpointMap(), refinement, EdgeFilter{ &frozenEdges, false });
 }
