@@ -166,24 +166,8 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   result.seconds.graph = secondsSince(start);
 
   start = Clock::now();
-  const auto coloring = makeColoring(options.coloring);
-  if (!coloring)
-  {
-    return Status::failure("unknown colouring '" + options.coloring + "'");
-  }
-  const int threads = result.numberOfThreads;
-  const ParallelFor parallelFor =
-    [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
-  {
-    runParallel(threads, count, body);
-  };
-  status = coloring->color(graph, parallelFor, colorOfPartition);
+  status = colorPartitions(graph, options.coloring, result.numberOfThreads, colorOfPartition);
   result.seconds.color = secondsSince(start);
-  if (status.ok() && !isProperColoring(graph, colorOfPartition))
-  {
-    return Status::failure(std::string("colouring '") + coloring->name() +
-      "' gave two adjacent partitions the same colour");
-  }
   result.numberOfColors = countColors(colorOfPartition);
   result.partitionsPerColor = colorSizes(colorOfPartition, result.numberOfColors);
   if (result.numberOfColors > 0)

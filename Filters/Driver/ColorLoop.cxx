@@ -2,6 +2,7 @@
 
 #include "Geometry.h"
 #include "ParallelFor.h"
+#include "PartitionColoring.h"
 
 #include <algorithm>
 #include <chrono>
@@ -281,6 +282,28 @@ Status checkForecastSize(
 }
 
 } // namespace
+
+Status colorPartitions(const PartitionGraph& graph, const std::string& coloringName, int threads,
+  std::vector<int>& colorOfPartition)
+{
+  const auto coloring = makeColoring(coloringName);
+  if (!coloring)
+  {
+    return Status::failure("unknown colouring '" + coloringName + "'");
+  }
+  const ParallelFor parallelFor =
+    [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
+  {
+    runParallel(threads, count, body);
+  };
+  Status status = coloring->color(graph, parallelFor, colorOfPartition);
+  if (status.ok() && !isProperColoring(graph, colorOfPartition))
+  {
+    return Status::failure(std::string("colouring '") + coloring->name() +
+      "' gave two adjacent partitions the same colour");
+  }
+  return status;
+}
 
 Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& options,
   AdaptationState& state, AdaptationResult& result)

@@ -44,6 +44,11 @@ struct ColorLoopSetup
   ImprovementParameters improvement;
 };
 
+// Colours the partition graph with the named colouring (see coloringNames()) on `threads`
+// threads, and checks that the result is proper.
+Status colorPartitions(const PartitionGraph& graph, const std::string& coloringName, int threads,
+  std::vector<int>& colorOfPartition);
+
 // Runs all iterations. Sets result.aborted (and returns success) when options.abortRequested
 // says so between two colours.
 Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& options,

@@ -82,19 +82,8 @@ Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
   const PartitionGraph graph =
     graphOfPartitions(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
 
-  const auto coloring = makeColoring(options.coloring);
-  if (!coloring)
-  {
-    return Status::failure("unknown colouring '" + options.coloring + "'");
-  }
-  const int threads = refinementSetup.threads;
-  const ParallelFor parallelFor =
-    [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
-  {
-    runParallel(threads, count, body);
-  };
   std::vector<int> colorOfBox;
-  Status status = coloring->color(graph, parallelFor, colorOfBox);
+  Status status = colorPartitions(graph, options.coloring, refinementSetup.threads, colorOfBox);
   if (!status.ok())
   {
     return status;

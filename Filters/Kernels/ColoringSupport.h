@@ -48,6 +48,19 @@ private:
   std::uint64_t Stamp = 1;
 };
 
+// Marks the colours of partition p's neighbours (uncoloured ones, -1, are skipped).
+template <typename Graph>
+void forbidNeighbourColors(
+  const Graph& graph, int p, const std::vector<int>& colorOfPartition, ForbiddenColors& forbidden)
+{
+  forbidden.clear();
+  const int* neighbours = graph.neighboursOf(p);
+  for (int i = 0; i < graph.degree(p); ++i)
+  {
+    forbidden.forbid(colorOfPartition[neighbours[i]]);
+  }
+}
+
 // Population of each colour: number of partitions that carry it.
 inline std::vector<std::int64_t> colorSizes(const std::vector<int>& colorOfPartition, int colors)
 {

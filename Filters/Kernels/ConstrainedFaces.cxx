@@ -1,5 +1,7 @@
 #include "ConstrainedFaces.h"
 
+#include "Geometry.h"
+
 #include <algorithm>
 
 namespace cgmesh
@@ -19,17 +21,7 @@ void findConstrainedFaces(const PartitionMesh& partition, std::vector<Face>& bou
   {
     for (int skip = 0; skip < 4; ++skip)
     {
-      Face corners;
-      int n = 0;
-      for (int i = 0; i < 4; ++i)
-      {
-        if (i != skip)
-        {
-          corners[n++] = partition.tets[t][i];
-        }
-      }
-      std::sort(corners.begin(), corners.end());
-      faces.push_back({ corners, t });
+      faces.push_back({ sortedFace(partition.tets[t].data(), skip), t });
     }
   }
   std::sort(faces.begin(), faces.end(),

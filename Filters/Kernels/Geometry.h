@@ -4,6 +4,8 @@
 
 #include "TetMesh.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace cgmesh
@@ -49,6 +51,24 @@ inline double triangleArea(const double* p0, const double* p1, const double* p2)
   const double cy = a[2] * b[0] - a[0] * b[2];
   const double cz = a[0] * b[1] - a[1] * b[0];
   return 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+}
+
+// The corners of the face opposite corner `skip`, in ascending order: the key under which both
+// tets sharing a face find it.
+template <typename Index>
+std::array<Index, 3> sortedFace(const Index* corners, int skip)
+{
+  std::array<Index, 3> face;
+  int n = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    if (i != skip)
+    {
+      face[n++] = corners[i];
+    }
+  }
+  std::sort(face.begin(), face.end());
+  return face;
 }
 
 // The six edges of a tet as pairs of local corner indices; the order is part of the template

@@ -12,12 +12,7 @@ Status GreedyColoring::color(
   ForbiddenColors forbidden;
   for (int p = 0; p < graph.numberOfPartitions; ++p)
   {
-    forbidden.clear();
-    const int* neighbours = graph.neighboursOf(p);
-    for (int i = 0; i < graph.degree(p); ++i)
-    {
-      forbidden.forbid(colorOfPartition[neighbours[i]]);
-    }
+    forbidNeighbourColors(graph, p, colorOfPartition, forbidden);
     colorOfPartition[p] = forbidden.firstAllowed();
   }
   return Status::success();

@@ -20,12 +20,7 @@ Status GreedyLeastUsedColoring::color(const PartitionGraph& graph, const Paralle
   ForbiddenColors forbidden;
   for (int p = 0; p < graph.numberOfPartitions; ++p)
   {
-    forbidden.clear();
-    const int* neighbours = graph.neighboursOf(p);
-    for (int i = 0; i < graph.degree(p); ++i)
-    {
-      forbidden.forbid(colorOfPartition[neighbours[i]]);
-    }
+    forbidNeighbourColors(graph, p, colorOfPartition, forbidden);
     int chosen = -1;
     for (int c = 0; c < static_cast<int>(used.size()); ++c)
     {

@@ -1,5 +1,7 @@
 #include "MeshPartitioner.h"
 
+#include "Geometry.h"
+
 #include <metis.h>
 
 #include <algorithm>
@@ -22,20 +24,9 @@ DualGraph buildDualGraph(const TetMesh& mesh)
   faces.reserve(4 * mesh.tets.size());
   for (CellId t = 0; t < mesh.numberOfTets(); ++t)
   {
-    const Tet& tet = mesh.tets[t];
     for (int skip = 0; skip < 4; ++skip)
     {
-      std::array<PointId, 3> corners;
-      int n = 0;
-      for (int i = 0; i < 4; ++i)
-      {
-        if (i != skip)
-        {
-          corners[n++] = tet[i];
-        }
-      }
-      std::sort(corners.begin(), corners.end());
-      faces.push_back({ corners, t });
+      faces.push_back({ sortedFace(mesh.tets[t].data(), skip), t });
     }
   }
   std::sort(faces.begin(), faces.end(),

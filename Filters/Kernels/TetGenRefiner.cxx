@@ -154,20 +154,9 @@ std::vector<std::array<int, 3>> hullAndInterfaceFaces(const tetgenio& io)
   faces.reserve(4 * static_cast<std::size_t>(io.numberoftetrahedra));
   for (int t = 0; t < io.numberoftetrahedra; ++t)
   {
-    const int* c = io.tetrahedronlist + 4 * t;
     for (int skip = 0; skip < 4; ++skip)
     {
-      std::array<int, 3> face;
-      int n = 0;
-      for (int i = 0; i < 4; ++i)
-      {
-        if (i != skip)
-        {
-          face[n++] = c[i];
-        }
-      }
-      std::sort(face.begin(), face.end());
-      faces.push_back({ face, t });
+      faces.push_back({ sortedFace(io.tetrahedronlist + 4 * t, skip), t });
     }
   }
   std::sort(faces.begin(), faces.end(),
