@@ -1,6 +1,7 @@
 #include "FinFetGenerator.h"
 
 #include "CubeGenerator.h"
+#include "FinFetLayout.h"
 
 #include <cmath>
 
@@ -8,13 +9,6 @@ namespace cgmesh
 {
 namespace
 {
-
-// Material breakpoints along each axis (nm). x: source | spacer | gate | spacer | drain;
-// y: isolation | gate | oxide | fin | oxide | gate | isolation; z: substrate | buried oxide |
-// fin | top oxide | gate.
-const std::vector<double> XBreaks = { 0, 15, 20, 40, 45, 60 };
-const std::vector<double> YBreaks = { -17, -11, -7, -5, 5, 7, 11, 17 };
-const std::vector<double> ZBreaks = { 0, 20, 30, 60, 62, 72 };
 
 // Subdivides every interval between breakpoints into pieces no longer than `spacing`.
 std::vector<double> gradedLines(const std::vector<double>& breaks, double spacing)
@@ -32,41 +26,12 @@ std::vector<double> gradedLines(const std::vector<double>& breaks, double spacin
   return lines;
 }
 
-bool inside(double value, double low, double high)
-{
-  return value > low && value < high;
-}
-
-FinFetMaterial materialAt(double x, double y, double z)
-{
-  if (z < 20)
-  {
-    return Substrate;
-  }
-  if (z < 30)
-  {
-    return BuriedOxide;
-  }
-  const bool underGate = inside(x, 20, 40);
-  const bool inSpacer = inside(x, 15, 20) || inside(x, 40, 45);
-  if (inside(y, -5, 5) && z < 60)
-  {
-    return underGate ? FinChannel : (x < 30 ? Source : Drain);
-  }
-  const bool besideFin = inside(y, -7, 7) && z < 62;
-  if (underGate)
-  {
-    return besideFin ? GateOxide : (inside(y, -11, 11) ? Gate : Isolation);
-  }
-  return inSpacer && inside(y, -11, 11) ? Spacer : Isolation;
-}
-
 std::int64_t tetCountFor(double spacing)
 {
   std::int64_t cells = 6;
-  for (const auto* breaks : { &XBreaks, &YBreaks, &ZBreaks })
+  for (int axis = 0; axis < 3; ++axis)
   {
-    cells *= static_cast<std::int64_t>(gradedLines(*breaks, spacing).size() - 1);
+    cells *= static_cast<std::int64_t>(gradedLines(finFetBreaks(axis), spacing).size() - 1);
   }
   return cells;
 }
@@ -95,8 +60,8 @@ Status generateFinFet(std::int64_t targetTets, TetMesh& mesh)
   const double spacing =
     std::abs(tetCountFor(coarse) - targetTets) <= std::abs(tetCountFor(fine) - targetTets) ? coarse
                                                                                            : fine;
-  const GridLines lines = { gradedLines(XBreaks, spacing), gradedLines(YBreaks, spacing),
-    gradedLines(ZBreaks, spacing) };
+  const GridLines lines = { gradedLines(finFetBreaks(0), spacing),
+    gradedLines(finFetBreaks(1), spacing), gradedLines(finFetBreaks(2), spacing) };
   Status status = generateKuhnGrid(lines, mesh);
   if (!status.ok())
   {
@@ -113,7 +78,7 @@ Status generateFinFet(std::int64_t targetTets, TetMesh& mesh)
         centroid[axis] += 0.25 * mesh.point(p)[axis];
       }
     }
-    mesh.regions.push_back(materialAt(centroid[0], centroid[1], centroid[2]));
+    mesh.regions.push_back(finFetMaterialAt(centroid[0], centroid[1], centroid[2]));
   }
   return Status::success();
 }

@@ -31,8 +31,15 @@ enum FinFetMaterial
 std::vector<std::string> finFetMaterialNames();
 
 // Writes the device with about `targetTets` tetrahedra (at least a few thousand) and the material
-// of every tet in mesh.regions.
+// of every tet in mesh.regions: the structured version (Kuhn tets on the graded grid).
 Status generateFinFet(std::int64_t targetTets, TetMesh& mesh);
+
+// The same device meshed by TetGen from a piecewise linear complex: the material boxes' faces
+// where materials change (and the outer boundary) are facets, one region seed per box carries its
+// material. Quality tets (radius-edge ratio 1.414); the volume bound is searched until the tet
+// count is within 5% of `targetTets` (837,584 is the size of the reference device). Calls TetGen
+// in this process: meant for command-line generation, not for a long-lived host.
+Status generateFinFetWithTetGen(std::int64_t targetTets, TetMesh& mesh);
 
 } // namespace cgmesh
 
