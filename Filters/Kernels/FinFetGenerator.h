@@ -37,7 +37,8 @@ Status generateFinFet(std::int64_t targetTets, TetMesh& mesh);
 // The same device meshed by TetGen from a piecewise linear complex: the material boxes' faces
 // where materials change (and the outer boundary) are facets, one region seed per box carries its
 // material. Quality tets (radius-edge ratio 1.414); the volume bound is searched until the tet
-// count is within 5% of `targetTets` (837,584 is the size of the reference device). Calls TetGen
+// count is within 5% of `targetTets` (837,584 is the size of the reference device; a coarse
+// mesh, where the fixed facets dominate, may stay up to about 10% off). Calls TetGen
 // in this process: meant for command-line generation, not for a long-lived host.
 Status generateFinFetWithTetGen(std::int64_t targetTets, TetMesh& mesh);
 

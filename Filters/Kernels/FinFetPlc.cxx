@@ -189,23 +189,34 @@ Status generateFinFetWithTetGen(std::int64_t targetTets, TetMesh& mesh)
   {
     volume *= grid.breaks[axis].back() - grid.breaks[axis].front();
   }
-  // TetGen's tets average about half the bound; correct the bound from each attempt's count.
+  // TetGen's tets average about half the bound. Scale the bound by each attempt's miss until the
+  // target is bracketed, then bisect (geometrically); keep the closest mesh.
   double bound = 2.0 * volume / static_cast<double>(targetTets);
-  for (int attempt = 0; attempt < 6; ++attempt)
+  double tooFine = 0, tooCoarse = 0; // bounds known to give too many / too few tets
+  double bestMiss = HUGE_VAL;
+  TetMesh attemptMesh;
+  for (int attempt = 0; attempt < 12; ++attempt)
   {
-    Status status = meshPlc(grid, bound, mesh);
+    Status status = meshPlc(grid, bound, attemptMesh);
     if (!status.ok())
     {
       return status;
     }
-    const double ratio = static_cast<double>(mesh.numberOfTets()) / static_cast<double>(targetTets);
-    if (std::abs(ratio - 1.0) <= 0.05)
+    const double ratio =
+      static_cast<double>(attemptMesh.numberOfTets()) / static_cast<double>(targetTets);
+    if (std::abs(ratio - 1.0) < bestMiss)
     {
-      return Status::success();
+      bestMiss = std::abs(ratio - 1.0);
+      mesh = attemptMesh;
     }
-    bound *= ratio;
+    if (bestMiss <= 0.05)
+    {
+      break;
+    }
+    (ratio > 1 ? tooFine : tooCoarse) = bound;
+    bound = tooFine > 0 && tooCoarse > 0 ? std::sqrt(tooFine * tooCoarse) : bound * ratio;
   }
-  return Status::success(); // the closest the search got: still a valid device mesh
+  return Status::success();
 }
 
 } // namespace cgmesh
