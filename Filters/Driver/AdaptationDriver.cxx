@@ -169,6 +169,7 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   status = colorPartitions(graph, options.coloring, result.numberOfThreads, colorOfPartition);
   result.seconds.color = secondsSince(start);
   result.numberOfColors = countColors(colorOfPartition);
+  result.colorOfPartition = colorOfPartition;
   result.partitionsPerColor = colorSizes(colorOfPartition, result.numberOfColors);
   if (result.numberOfColors > 0)
   {

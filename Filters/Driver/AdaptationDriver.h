@@ -94,6 +94,7 @@ struct AdaptationResult
   // Seconds each partition's heal and refinement took, per iteration: entry
   // iteration * numberOfPartitions + partition (the data for makespan models).
   std::vector<double> partitionTaskSeconds;
+  std::vector<int> colorOfPartition; // the refinement colouring
   std::vector<std::int64_t> partitionsPerColor; // colour population, in partitions
   std::vector<std::int64_t> cellsPerColor;      // colour population, in output tets
   double colorBalance = 0;                      // largest colour set / mean (partitions)
