@@ -180,6 +180,76 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   return status;
 }
 
+// The colour loop's set-up for refinement (the template table is built once per process, about
+// 30 ms, and never changed afterwards).
+ColorLoopSetup refinementSetup(const AdaptationOptions& options, const AdaptationResult& result,
+  const PartitionGraph& graph, const std::vector<int>& colorOfPartition)
+{
+  static const TemplateTable templates;
+  ColorLoopSetup setup;
+  setup.graph = &graph;
+  setup.colorOfPartition = &colorOfPartition;
+  setup.numberOfColors = result.numberOfColors;
+  setup.numberOfIterations = options.numberOfIterations;
+  setup.threads = result.numberOfThreads;
+  setup.squaredThreshold = result.edgeLengthThreshold * result.edgeLengthThreshold;
+  setup.templates = &templates;
+  setup.method = options.method;
+  setup.delaunay.maximumVolume = result.volumeBound;
+  setup.delaunay.radiusEdgeRatio = options.radiusEdgeRatio;
+  setup.maximumNumberOfCells = options.maximumNumberOfCells;
+  setup.improve = options.improveQuality;
+  setup.improvement.passes = options.improvementPasses;
+  // Improvement must not undo Delaunay refinement's volume bound.
+  setup.improvement.maximumVolume =
+    options.method == RefinementMethod::Delaunay ? result.volumeBound : 0.0;
+  return setup;
+}
+
+// TetGen calls go to one worker process per thread (or one, serialised, on request).
+void attachTetGen(const AdaptationOptions& options, ColorLoopSetup& setup, AdaptationResult& result,
+  std::unique_ptr<TetGenWorkerPool>& workers, std::mutex& serialTetGen)
+{
+  const bool serialize = options.serializeTetGen;
+  workers = std::make_unique<TetGenWorkerPool>(serialize ? 1 : result.numberOfThreads);
+  result.concurrentTetGen = !serialize && result.numberOfThreads > 1;
+  TetGenWorkerPool* pool = workers.get();
+  setup.runTetGen = [pool, serialize, &serialTetGen](
+                      const tetgenio& in, const std::string& switches, tetgenio& out)
+  {
+    if (serialize)
+    {
+      std::lock_guard<std::mutex> lock(serialTetGen);
+      return pool->run(0, in, switches, out);
+    }
+    return pool->run(currentThreadIndex(), in, switches, out);
+  };
+}
+
+void adoptMergedMesh(MergedMesh& merged, const std::vector<int>& partitionOfInputCell,
+  const std::vector<int>& colorOfPartition, AdaptationResult& result)
+{
+  result.mesh = std::move(merged.mesh);
+  result.parentCell = std::move(merged.parentCell);
+  result.provenance = std::move(merged.provenance);
+  // A tet was refined by the partition of the input tet it comes from (the improvement sweep
+  // regroups tets but refines nothing).
+  result.partitionOfCell.resize(result.parentCell.size());
+  result.colorOfCell.resize(result.parentCell.size());
+  result.cellsPerColor.assign(result.numberOfColors, 0);
+  for (std::size_t t = 0; t < result.partitionOfCell.size(); ++t)
+  {
+    result.partitionOfCell[t] = partitionOfInputCell[result.parentCell[t]];
+    result.colorOfCell[t] = colorOfPartition[result.partitionOfCell[t]];
+    ++result.cellsPerColor[result.colorOfCell[t]];
+  }
+  if (merged.removedPoints > 0)
+  {
+    result.warnings.push_back(
+      "removed " + std::to_string(merged.removedPoints) + " points that no tetrahedron uses");
+  }
+}
+
 Status runPipeline(const TetMesh& input, const AdaptationOptions& options, AdaptationResult& result)
 {
   std::vector<int> partitionOfCell;
@@ -199,44 +269,13 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   AdaptationState state;
   state.partitions.resize(result.numberOfPartitions);
   distributeTets(input, partitionOfCell, state);
-  // Built once per process (about 30 ms) and never changed afterwards.
-  static const TemplateTable templates;
-  ColorLoopSetup setup;
-  setup.graph = &graph;
-  setup.colorOfPartition = &colorOfPartition;
-  setup.numberOfColors = result.numberOfColors;
-  setup.numberOfIterations = options.numberOfIterations;
-  setup.threads = result.numberOfThreads;
-  setup.squaredThreshold = result.edgeLengthThreshold * result.edgeLengthThreshold;
-  setup.templates = &templates;
-  setup.method = options.method;
-  setup.delaunay.maximumVolume = result.volumeBound;
-  setup.delaunay.radiusEdgeRatio = options.radiusEdgeRatio;
+  ColorLoopSetup setup = refinementSetup(options, result, graph, colorOfPartition);
   std::unique_ptr<TetGenWorkerPool> tetgenWorkers;
   std::mutex serialTetGen;
   if (options.method == RefinementMethod::Delaunay)
   {
-    const bool serialize = options.serializeTetGen;
-    tetgenWorkers = std::make_unique<TetGenWorkerPool>(serialize ? 1 : result.numberOfThreads);
-    result.concurrentTetGen = !serialize && result.numberOfThreads > 1;
-    TetGenWorkerPool* pool = tetgenWorkers.get();
-    setup.runTetGen = [pool, serialize, &serialTetGen](
-                        const tetgenio& in, const std::string& switches, tetgenio& out)
-    {
-      if (serialize)
-      {
-        std::lock_guard<std::mutex> lock(serialTetGen);
-        return pool->run(0, in, switches, out);
-      }
-      return pool->run(currentThreadIndex(), in, switches, out);
-    };
+    attachTetGen(options, setup, result, tetgenWorkers, serialTetGen);
   }
-  setup.maximumNumberOfCells = options.maximumNumberOfCells;
-  setup.improve = options.improveQuality;
-  setup.improvement.passes = options.improvementPasses;
-  // Improvement must not undo Delaunay refinement's volume bound.
-  setup.improvement.maximumVolume =
-    options.method == RefinementMethod::Delaunay ? result.volumeBound : 0.0;
   status = runColorLoop(setup, options, state, result);
   tetgenWorkers.reset();
   if (!status.ok() || result.aborted)
@@ -266,25 +305,7 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   {
     return status;
   }
-  result.mesh = std::move(merged.mesh);
-  result.parentCell = std::move(merged.parentCell);
-  result.provenance = std::move(merged.provenance);
-  // A tet was refined by the partition of the input tet it comes from (the improvement sweep
-  // regroups tets but refines nothing).
-  result.partitionOfCell.resize(result.parentCell.size());
-  result.colorOfCell.resize(result.parentCell.size());
-  result.cellsPerColor.assign(result.numberOfColors, 0);
-  for (std::size_t t = 0; t < result.partitionOfCell.size(); ++t)
-  {
-    result.partitionOfCell[t] = partitionOfCell[result.parentCell[t]];
-    result.colorOfCell[t] = colorOfPartition[result.partitionOfCell[t]];
-    ++result.cellsPerColor[result.colorOfCell[t]];
-  }
-  if (merged.removedPoints > 0)
-  {
-    result.warnings.push_back(
-      "removed " + std::to_string(merged.removedPoints) + " points that no tetrahedron uses");
-  }
+  adoptMergedMesh(merged, partitionOfCell, colorOfPartition, result);
   return Status::success();
 }
 
