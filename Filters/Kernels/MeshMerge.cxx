@@ -11,47 +11,104 @@ namespace cgmesh
 namespace
 {
 
+// Points whose recorded location no longer holds (moved, or derived from a moved point) get
+// barycentric weights in the input tet that contains their final position.
+class Relocator
+{
+public:
+  Relocator(PointId totalPoints, const RelocationInput& relocation)
+    : Input(relocation.input)
+  {
+    if (!this->Input || !relocation.movedPoints || relocation.movedPoints->empty())
+    {
+      return;
+    }
+    this->Flags.assign(totalPoints, 0);
+    for (PointId p : *relocation.movedPoints)
+    {
+      this->Flags[p] = 1;
+    }
+    const TetMesh* input = this->Input;
+    this->Locator =
+      std::make_unique<TetLocator>(input->tets, [input](PointId id) { return input->point(id); });
+  }
+
+  bool isMoved(PointId p) const { return !this->Flags.empty() && this->Flags[p]; }
+
+  // A new point inherits relocation from any point it is made of.
+  bool inheritsMove(PointId p, const PointSource& location)
+  {
+    for (int slot = 0; slot < 4 && !this->Flags.empty() && !this->Flags[p]; ++slot)
+    {
+      this->Flags[p] = location.weights[slot] != 0 && this->Flags[location.points[slot]];
+    }
+    return this->isMoved(p);
+  }
+
+  void appendLocation(const double* point, PointProvenance& all) const
+  {
+    const auto where = this->Locator->locate(point);
+    for (int k = 0; k < 4; ++k)
+    {
+      all.sources.push_back(this->Input->tets[where.tet][k]);
+      all.weights.push_back(where.barycentric[k]);
+    }
+    all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
+  }
+
+private:
+  const TetMesh* Input;
+  std::vector<char> Flags;
+  std::unique_ptr<TetLocator> Locator;
+};
+
+// The weighted sum of the parents' expansions, equal sources merged.
+void appendExpansion(
+  const PointSource& location, PointProvenance& all, std::vector<std::pair<PointId, double>>& terms)
+{
+  terms.clear();
+  for (int slot = 0; slot < 4; ++slot)
+  {
+    if (location.weights[slot] == 0)
+    {
+      continue;
+    }
+    const PointId parent = location.points[slot];
+    for (std::int64_t k = all.offsets[parent]; k < all.offsets[parent + 1]; ++k)
+    {
+      terms.emplace_back(all.sources[k], location.weights[slot] * all.weights[k]);
+    }
+  }
+  std::sort(terms.begin(), terms.end());
+  for (std::size_t k = 0; k < terms.size(); ++k)
+  {
+    if (k + 1 < terms.size() && terms[k + 1].first == terms[k].first)
+    {
+      terms[k + 1].second += terms[k].second;
+      continue;
+    }
+    all.sources.push_back(terms[k].first);
+    all.weights.push_back(terms[k].second);
+  }
+  all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
+}
+
 // Weights of every global point over input points. A new point is a weighted sum of points with
 // smaller ids (it was inserted after them), so one pass in id order suffices.
 PointProvenance expandProvenance(PointId inputPointCount,
   const std::vector<PointSource>& newPointSources, const std::vector<double>& coordinates,
   const RelocationInput& relocation)
 {
-  std::vector<char> relocated;
-  if (relocation.input && relocation.movedPoints && !relocation.movedPoints->empty())
-  {
-    relocated.assign(inputPointCount + newPointSources.size(), 0);
-    for (PointId p : *relocation.movedPoints)
-    {
-      relocated[p] = 1;
-    }
-  }
-  std::unique_ptr<TetLocator> locator;
-  if (!relocated.empty())
-  {
-    const TetMesh* input = relocation.input;
-    locator =
-      std::make_unique<TetLocator>(input->tets, [input](PointId id) { return input->point(id); });
-  }
-  auto locateInInput = [&](PointId p, PointProvenance& all)
-  {
-    const auto where = locator->locate(coordinates.data() + 3 * p);
-    for (int k = 0; k < 4; ++k)
-    {
-      all.sources.push_back(relocation.input->tets[where.tet][k]);
-      all.weights.push_back(where.barycentric[k]);
-    }
-    all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
-  };
-  PointProvenance all;
   const PointId total = inputPointCount + static_cast<PointId>(newPointSources.size());
+  Relocator relocator(total, relocation);
+  PointProvenance all;
   all.offsets.reserve(total + 1);
   all.offsets.push_back(0);
   for (PointId p = 0; p < inputPointCount; ++p)
   {
-    if (!relocated.empty() && relocated[p])
+    if (relocator.isMoved(p))
     {
-      locateInInput(p, all);
+      relocator.appendLocation(coordinates.data() + 3 * p, all);
       continue;
     }
     all.sources.push_back(p);
@@ -61,45 +118,13 @@ PointProvenance expandProvenance(PointId inputPointCount,
   std::vector<std::pair<PointId, double>> terms;
   for (std::size_t index = 0; index < newPointSources.size(); ++index)
   {
-    const PointSource& location = newPointSources[index];
     const PointId point = inputPointCount + static_cast<PointId>(index);
-    if (!relocated.empty())
+    if (relocator.inheritsMove(point, newPointSources[index]))
     {
-      for (int slot = 0; slot < 4 && !relocated[point]; ++slot)
-      {
-        relocated[point] = location.weights[slot] != 0 && relocated[location.points[slot]];
-      }
-      if (relocated[point])
-      {
-        locateInInput(point, all);
-        continue;
-      }
+      relocator.appendLocation(coordinates.data() + 3 * point, all);
+      continue;
     }
-    terms.clear();
-    for (int slot = 0; slot < 4; ++slot)
-    {
-      if (location.weights[slot] == 0)
-      {
-        continue;
-      }
-      const PointId parent = location.points[slot];
-      for (std::int64_t k = all.offsets[parent]; k < all.offsets[parent + 1]; ++k)
-      {
-        terms.emplace_back(all.sources[k], location.weights[slot] * all.weights[k]);
-      }
-    }
-    std::sort(terms.begin(), terms.end());
-    for (std::size_t k = 0; k < terms.size(); ++k)
-    {
-      if (k + 1 < terms.size() && terms[k + 1].first == terms[k].first)
-      {
-        terms[k + 1].second += terms[k].second;
-        continue;
-      }
-      all.sources.push_back(terms[k].first);
-      all.weights.push_back(terms[k].second);
-    }
-    all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
+    appendExpansion(newPointSources[index], all, terms);
   }
   return all;
 }

@@ -51,6 +51,10 @@ private:
   double largestVolume(const std::vector<int>& tets) const;
   bool orderedRing(int a, int b, const std::vector<int>& around, std::vector<int>& ring) const;
   double triangleQuality(int p, int q, int r, int a, int b, double side) const;
+  double bestRingTriangulation(
+    int a, int b, const std::vector<int>& ring, std::vector<std::vector<int>>& split) const;
+  std::vector<Corners> ringTets(
+    int a, int b, const std::vector<int>& ring, const std::vector<std::vector<int>>& split) const;
   double totalVolume(const std::vector<Corners>& tets) const;
   bool swapFace(int t, int skip);
   bool smoothVertex(int v);
@@ -287,6 +291,70 @@ double Improver::triangleQuality(int p, int q, int r, int a, int b, double side)
   return std::min(this->quality(first), this->quality(second));
 }
 
+// Best triangulation of the ring polygon around edge (a, b): the one whose worst tet is best
+// (dynamic programming over sub-chains ring[i..j]); returns that worst mean ratio. Triangles
+// taken in ring order all see a on one side: the side of the fan from ring[0] as a whole.
+double Improver::bestRingTriangulation(
+  int a, int b, const std::vector<int>& ring, std::vector<std::vector<int>>& split) const
+{
+  const int n = static_cast<int>(ring.size());
+  double side = 0;
+  for (int i = 1; i + 1 < n; ++i)
+  {
+    side += this->orientation(ring[0], ring[i], ring[i + 1], a);
+  }
+  std::vector<std::vector<double>> best(n, std::vector<double>(n, 0));
+  split.assign(n, std::vector<int>(n, -1));
+  for (int length = 2; length < n; ++length)
+  {
+    for (int i = 0; i + length < n; ++i)
+    {
+      const int j = i + length;
+      best[i][j] = -2;
+      for (int k = i + 1; k < j; ++k)
+      {
+        double value = this->triangleQuality(ring[i], ring[k], ring[j], a, b, side);
+        value = std::min(value, k - i >= 2 ? best[i][k] : 1e300);
+        value = std::min(value, j - k >= 2 ? best[k][j] : 1e300);
+        if (value > best[i][j])
+        {
+          best[i][j] = value;
+          split[i][j] = k;
+        }
+      }
+    }
+  }
+  return best[0][n - 1];
+}
+
+// The tets of the chosen triangulation: each triangle joined to both ends of the removed edge.
+std::vector<Corners> Improver::ringTets(
+  int a, int b, const std::vector<int>& ring, const std::vector<std::vector<int>>& split) const
+{
+  std::vector<Corners> created;
+  const int n = static_cast<int>(ring.size());
+  std::vector<std::pair<int, int>> pending = { { 0, n - 1 } };
+  while (!pending.empty())
+  {
+    const auto chain = pending.back();
+    pending.pop_back();
+    const int k = split[chain.first][chain.second];
+    const int p = ring[chain.first], q = ring[k], r = ring[chain.second];
+    const bool aPositive = this->orientation(p, q, r, a) > 0;
+    created.push_back(aPositive ? Corners{ p, q, r, a } : Corners{ p, r, q, a });
+    created.push_back(aPositive ? Corners{ p, r, q, b } : Corners{ p, q, r, b });
+    if (k - chain.first >= 2)
+    {
+      pending.emplace_back(chain.first, k);
+    }
+    if (chain.second - k >= 2)
+    {
+      pending.emplace_back(k, chain.second);
+    }
+  }
+  return created;
+}
+
 bool Improver::removeEdge(int a, int b)
 {
   const std::vector<int> around = this->aliveTetsWith({ a, b });
@@ -313,60 +381,13 @@ bool Improver::removeEdge(int a, int b)
   {
     return false;
   }
-  // Best triangulation of the ring polygon: the one whose worst tet is best (dynamic programming
-  // over sub-chains ring[i..j]). Triangles taken in ring order all see a on one side: the side of
-  // the fan from ring[0] as a whole.
-  const int n = static_cast<int>(ring.size());
-  double side = 0;
-  for (int i = 1; i + 1 < n; ++i)
-  {
-    side += this->orientation(ring[0], ring[i], ring[i + 1], a);
-  }
-  std::vector<std::vector<double>> best(n, std::vector<double>(n, 0));
-  std::vector<std::vector<int>> split(n, std::vector<int>(n, -1));
-  for (int length = 2; length < n; ++length)
-  {
-    for (int i = 0; i + length < n; ++i)
-    {
-      const int j = i + length;
-      best[i][j] = -2;
-      for (int k = i + 1; k < j; ++k)
-      {
-        double value = this->triangleQuality(ring[i], ring[k], ring[j], a, b, side);
-        value = std::min(value, k - i >= 2 ? best[i][k] : 1e300);
-        value = std::min(value, j - k >= 2 ? best[k][j] : 1e300);
-        if (value > best[i][j])
-        {
-          best[i][j] = value;
-          split[i][j] = k;
-        }
-      }
-    }
-  }
-  if (!(best[0][n - 1] > 0) || !improves(best[0][n - 1], before))
+  std::vector<std::vector<int>> split;
+  const double best = this->bestRingTriangulation(a, b, ring, split);
+  if (!(best > 0) || !improves(best, before))
   {
     return false;
   }
-  std::vector<Corners> created;
-  std::vector<std::pair<int, int>> pending = { { 0, n - 1 } };
-  while (!pending.empty())
-  {
-    const auto chain = pending.back();
-    pending.pop_back();
-    const int k = split[chain.first][chain.second];
-    const int p = ring[chain.first], q = ring[k], r = ring[chain.second];
-    const bool aPositive = this->orientation(p, q, r, a) > 0;
-    created.push_back(aPositive ? Corners{ p, q, r, a } : Corners{ p, r, q, a });
-    created.push_back(aPositive ? Corners{ p, r, q, b } : Corners{ p, q, r, b });
-    if (k - chain.first >= 2)
-    {
-      pending.emplace_back(chain.first, k);
-    }
-    if (chain.second - k >= 2)
-    {
-      pending.emplace_back(k, chain.second);
-    }
-  }
+  const std::vector<Corners> created = this->ringTets(a, b, ring, split);
   std::vector<Corners> replaced;
   for (int t : around)
   {
