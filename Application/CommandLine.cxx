@@ -57,7 +57,7 @@ namespace
 {
 
 // Options that take no value; they are stored with an empty value.
-const std::set<std::string> RefineFlags = { "--partition-by-region" };
+const std::set<std::string> RefineFlags = { "--partition-by-region", "--no-improve" };
 
 // Splits arguments into positionals, "--name value" / "--name=value" options and the value-less
 // `flags`.
@@ -173,6 +173,8 @@ Status checkRefineOptionCombinations(const std::map<std::string, std::string>& o
     return Status::failure("--partitions-per-region needs --partition-by-region");
   if (byRegion && !options.count("--region-array"))
     return Status::failure("--partition-by-region needs --region-array NAME");
+  if (options.count("--no-improve") && options.count("--improve-passes"))
+    return Status::failure("give either --no-improve or --improve-passes, not both");
   return Status::success();
 }
 
@@ -210,6 +212,13 @@ Status applyRefineOption(const std::string& name, const std::string& value, Refi
   }
   if (name == "--partitions-per-region")
     return parseInt(value, name, 1, INT_MAX, parsed.partitionsPerRegion);
+  if (name == "--no-improve")
+  {
+    parsed.improveQuality = false;
+    return Status::success();
+  }
+  if (name == "--improve-passes")
+    return parseInt(value, name, 0, 20, parsed.improvementPasses);
   if (name == "--stats")
   {
     parsed.statsFile = value;

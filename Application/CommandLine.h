@@ -28,6 +28,8 @@ struct RefineArguments
   std::string coloring = "greedy-lu"; // a vtkCoarseGrainedMeshAdaptation colouring name
   bool partitionByRegion = false;     // cut along the regions of regionArrayName
   int partitionsPerRegion = 1;        // with partitionByRegion
+  bool improveQuality = true;         // --no-improve turns it off
+  int improvementPasses = 2;          // --improve-passes, in [0, 20]
   std::string statsFile;              // JSON statistics, written when not empty
 };
 

@@ -1,12 +1,16 @@
 #include "RefineReport.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace cgmesh
@@ -55,6 +59,155 @@ std::string joinValues(const std::vector<std::int64_t>& values, const char* sepa
   return joined.str();
 }
 
+// The p-th percentile of `values` (reordered), interpolating linearly between the two nearest
+// ranks like numpy.percentile's default; NaN when empty.
+double percentile(std::vector<double>& values, double p)
+{
+  if (values.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  const double position = p / 100.0 * static_cast<double>(values.size() - 1);
+  const auto lower = static_cast<std::size_t>(std::floor(position));
+  std::nth_element(values.begin(), values.begin() + lower, values.end());
+  const double lowerValue = values[lower];
+  if (lower + 1 >= values.size())
+    return lowerValue;
+  // After nth_element every value past `lower` is at least lowerValue: the next rank is their
+  // minimum.
+  const double upperValue = *std::min_element(values.begin() + lower + 1, values.end());
+  return lowerValue + (position - static_cast<double>(lower)) * (upperValue - lowerValue);
+}
+
+QualitySummary summarizeQuality(std::vector<double>& angles, std::vector<double>& edgeRatios)
+{
+  QualitySummary summary;
+  summary.tets = static_cast<std::int64_t>(angles.size());
+  summary.minDihedralAngleMin = angles.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                               : *std::min_element(angles.begin(), angles.end());
+  summary.minDihedralAngleP1 = percentile(angles, 1.0);
+  summary.edgeRatioP99 = percentile(edgeRatios, 99.0);
+  return summary;
+}
+
+// All tets, and the tets split by the NearFormerInterface cell array (all interior without it).
+void collectQualitySummaries(vtkUnstructuredGrid* output, RefineStatistics& statistics)
+{
+  vtkCellData* cellData = output->GetCellData();
+  vtkDataArray* angleArray = cellData->GetArray("MinDihedralAngle");
+  vtkDataArray* edgeRatioArray = cellData->GetArray("EdgeRatio");
+  vtkDataArray* nearArray = cellData->GetArray("NearFormerInterface");
+  if (!angleArray || !edgeRatioArray)
+    return;
+  std::vector<double> angles[2];
+  std::vector<double> edgeRatios[2];
+  for (vtkIdType cellId = 0; cellId < output->GetNumberOfCells(); ++cellId)
+  {
+    const int near = nearArray && nearArray->GetComponent(cellId, 0) != 0 ? 1 : 0;
+    angles[near].push_back(angleArray->GetComponent(cellId, 0));
+    edgeRatios[near].push_back(edgeRatioArray->GetComponent(cellId, 0));
+  }
+  std::vector<double> allAngles(angles[0]);
+  allAngles.insert(allAngles.end(), angles[1].begin(), angles[1].end());
+  std::vector<double> allEdgeRatios(edgeRatios[0]);
+  allEdgeRatios.insert(allEdgeRatios.end(), edgeRatios[1].begin(), edgeRatios[1].end());
+  statistics.allTets = summarizeQuality(allAngles, allEdgeRatios);
+  statistics.interiorTets = summarizeQuality(angles[0], edgeRatios[0]);
+  statistics.nearInterfaceTets = summarizeQuality(angles[1], edgeRatios[1]);
+}
+
+double phaseSeconds(const RefineStatistics& statistics, const std::string& phase)
+{
+  for (const auto& entry : statistics.seconds)
+  {
+    if (entry.first == phase)
+      return entry.second;
+  }
+  return 0.0;
+}
+
+// Improve seconds over the filter's total seconds, 0 when the total is 0.
+double improveShare(const RefineStatistics& statistics)
+{
+  const double total = phaseSeconds(statistics, "total");
+  return total > 0 ? phaseSeconds(statistics, "improve") / total : 0.0;
+}
+
+void printImprovement(const RefineStatistics& statistics, std::ostream& stream)
+{
+  stream << std::setw(24) << "improvement"
+         << (statistics.improveQuality
+                ? "on, " + std::to_string(statistics.improvementPasses) + " passes"
+                : std::string("off"))
+         << "\n"
+         << std::setw(24) << "edge removals" << statistics.edgeRemovals << "\n"
+         << std::setw(24) << "face swaps" << statistics.faceSwaps << "\n"
+         << std::setw(24) << "vertex moves" << statistics.vertexMoves << "\n"
+         << std::setw(24) << "improve seconds" << std::fixed << std::setprecision(4)
+         << phaseSeconds(statistics, "improve") << std::defaultfloat << " (" << std::setprecision(3)
+         << 100.0 * improveShare(statistics) << " % of total)\n";
+}
+
+void printQualityRow(const char* name, const QualitySummary& summary, std::ostream& stream)
+{
+  stream << std::setw(24) << name << std::right << std::setw(10) << summary.tets;
+  if (summary.tets == 0)
+  {
+    stream << std::setw(18) << "-" << std::setw(18) << "-" << std::setw(16) << "-";
+  }
+  else
+  {
+    stream << std::fixed << std::setprecision(3) << std::setw(18) << summary.minDihedralAngleMin
+           << std::setw(18) << summary.minDihedralAngleP1 << std::setw(16) << summary.edgeRatioP99
+           << std::defaultfloat;
+  }
+  stream << std::left << "\n";
+}
+
+void printQualitySummaries(const RefineStatistics& statistics, std::ostream& stream)
+{
+  stream << "\n"
+         << std::setw(24) << "quality" << std::right << std::setw(10) << "tets" << std::setw(18)
+         << "min dihedral min" << std::setw(18) << "min dihedral p1" << std::setw(16)
+         << "edge ratio p99" << std::left << "\n";
+  printQualityRow("all", statistics.allTets, stream);
+  printQualityRow("interior", statistics.interiorTets, stream);
+  printQualityRow("near former interfaces", statistics.nearInterfaceTets, stream);
+}
+
+// A JSON number, or null for NaN (an empty set of tets).
+std::string jsonNumber(double value)
+{
+  if (std::isnan(value))
+    return "null";
+  std::ostringstream text;
+  text << std::setprecision(17) << value;
+  return text.str();
+}
+
+std::string qualityJson(const QualitySummary& summary)
+{
+  const bool empty = summary.tets == 0;
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  return "{\"tets\": " + std::to_string(summary.tets) +
+    ", \"minDihedralAngleMin\": " + jsonNumber(empty ? none : summary.minDihedralAngleMin) +
+    ", \"minDihedralAngleP1\": " + jsonNumber(empty ? none : summary.minDihedralAngleP1) +
+    ", \"edgeRatioP99\": " + jsonNumber(empty ? none : summary.edgeRatioP99) + "}";
+}
+
+void writeImprovementJson(const RefineStatistics& statistics, std::ostream& file)
+{
+  file << "  \"improvement\": {\"enabled\": " << (statistics.improveQuality ? "true" : "false")
+       << ", \"passes\": " << statistics.improvementPasses
+       << ", \"edgeRemovals\": " << statistics.edgeRemovals
+       << ", \"faceSwaps\": " << statistics.faceSwaps
+       << ", \"vertexMoves\": " << statistics.vertexMoves
+       << ", \"seconds\": " << jsonNumber(phaseSeconds(statistics, "improve"))
+       << ", \"shareOfTotal\": " << jsonNumber(improveShare(statistics)) << "},\n"
+       << "  \"quality\": {\"all\": " << qualityJson(statistics.allTets)
+       << ",\n              \"interior\": " << qualityJson(statistics.interiorTets)
+       << ",\n              \"nearFormerInterfaces\": " << qualityJson(statistics.nearInterfaceTets)
+       << "},\n";
+}
+
 } // namespace
 
 std::string jsonString(const std::string& text)
@@ -94,6 +247,10 @@ void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& stat
   statistics.partitionsPerColor = fieldValues(fieldData, "PartitionsPerColor");
   statistics.cellsPerColor = fieldValues(fieldData, "CellsPerColor");
   statistics.colorBalance = fieldValue(fieldData, "ColorBalance");
+  statistics.edgeRemovals = static_cast<std::int64_t>(fieldValue(fieldData, "EdgeRemovals"));
+  statistics.faceSwaps = static_cast<std::int64_t>(fieldValue(fieldData, "FaceSwaps"));
+  statistics.vertexMoves = static_cast<std::int64_t>(fieldValue(fieldData, "VertexMoves"));
+  collectQualitySummaries(output, statistics);
   for (const auto& phase : FilterPhases)
   {
     statistics.seconds.emplace_back(phase.first, fieldValue(fieldData, phase.second));
@@ -133,6 +290,8 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
                   : " (partitions " + joinValues(statistics.fallbackPartitions, " ") + ")")
            << "\n";
   }
+  printImprovement(statistics, stream);
+  printQualitySummaries(statistics, stream);
   stream << "\n"
          << std::setw(24) << "phase"
          << "seconds\n";
@@ -172,8 +331,10 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"volumeBound\": " << statistics.volumeBound << ",\n"
        << "  \"tetgenPoints\": " << statistics.tetgenPoints << ",\n"
        << "  \"delaunayFallbacks\": " << statistics.delaunayFallbacks << ",\n"
-       << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ") << "],\n"
-       << "  \"seconds\": {";
+       << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ")
+       << "],\n";
+  writeImprovementJson(statistics, file);
+  file << "  \"seconds\": {";
   for (size_t index = 0; index < statistics.seconds.size(); ++index)
   {
     file << (index ? ", " : "") << jsonString(statistics.seconds[index].first) << ": "

@@ -15,6 +15,16 @@ class vtkUnstructuredGrid;
 namespace cgmesh
 {
 
+// Quality of a set of output tets, from the filter's EdgeRatio and MinDihedralAngle arrays;
+// percentiles interpolate linearly between ranks (as numpy.percentile does); NaN when empty.
+struct QualitySummary
+{
+  std::int64_t tets = 0;
+  double minDihedralAngleMin = 0; // degrees
+  double minDihedralAngleP1 = 0;  // 1st percentile, degrees
+  double edgeRatioP99 = 0;        // 99th percentile
+};
+
 struct RefineStatistics
 {
   std::string inputFile;
@@ -39,12 +49,21 @@ struct RefineStatistics
   std::vector<std::int64_t> partitionsPerColor; // colour populations, one entry per colour
   std::vector<std::int64_t> cellsPerColor;
   double colorBalance = 0; // largest colour over the mean, in partitions
+  bool improveQuality = true;
+  int improvementPasses = 2;
+  std::int64_t edgeRemovals = 0; // improvement operations
+  std::int64_t faceSwaps = 0;
+  std::int64_t vertexMoves = 0;
+  QualitySummary allTets;
+  QualitySummary interiorTets;      // NearFormerInterface 0
+  QualitySummary nearInterfaceTets; // NearFormerInterface 1: touching a former interface vertex
   // (phase, seconds) in pipeline order: the filter's phases, then reading and writing files.
   std::vector<std::pair<std::string, double>> seconds;
 };
 
-// Fills counts, colours, partitions, threads, threshold, colouring, colour populations and phase
-// seconds from the filter output's field data (see vtkCoarseGrainedMeshAdaptation).
+// Fills counts, colours, partitions, threads, threshold, colouring, colour populations,
+// improvement counts and phase seconds from the filter output's field data (see
+// vtkCoarseGrainedMeshAdaptation), and the quality summaries from its cell arrays.
 void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& statistics);
 
 void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stream);

@@ -177,6 +177,8 @@ vtkSmartPointer<vtkUnstructuredGrid> runFilter(
   filter->SetColoringAlgorithm(settings.coloringAlgorithm);
   filter->SetPartitionByRegion(settings.partitionByRegion);
   filter->SetPartitionsPerRegion(settings.partitionsPerRegion);
+  filter->SetImproveQuality(settings.improveQuality);
+  filter->SetNumberOfImprovementPasses(settings.improvementPasses);
   filter->Update();
   vtkSmartPointer<vtkUnstructuredGrid> output = filter->GetOutput();
   CGMESH_CHECK(output && output->GetNumberOfCells() > 0,
@@ -347,12 +349,14 @@ void checkOutputArrays(vtkUnstructuredGrid* output)
   checkArrayRange(output, "ColorId", 0, colors - 1);
   checkArrayRange(output, "EdgeRatio", 1.0, 1e6);
   checkArrayRange(output, "MinDihedralAngle", 1e-6, 180.0);
+  checkArrayRange(output, "NearFormerInterface", 0, 1);
   checkColorPopulations(output, static_cast<int>(colors), static_cast<int>(partitions));
   auto* method = vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("Method"));
   CGMESH_CHECK(method && method->GetNumberOfValues() == 1 &&
       vtkCoarseGrainedMeshAdaptation::MethodFromName(method->GetValue(0).c_str()) >= 0,
     "field data Method missing or not a method name");
-  for (const char* name : { "VolumeBound", "DelaunayFallbacks", "TetGenPoints" })
+  for (const char* name : { "VolumeBound", "DelaunayFallbacks", "TetGenPoints", "EdgeRemovals",
+         "FaceSwaps", "VertexMoves" })
   {
     CGMESH_CHECK(fieldValue(output, name) >= 0, name << " negative");
   }

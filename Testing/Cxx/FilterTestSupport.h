@@ -47,6 +47,8 @@ struct FilterSettings
   int coloringAlgorithm = vtkCoarseGrainedMeshAdaptation::GREEDY_LEAST_USED;
   bool partitionByRegion = false;
   int partitionsPerRegion = 1;
+  bool improveQuality = true;
+  int improvementPasses = 2;
 };
 
 // Runs vtkCoarseGrainedMeshAdaptation; returns null (and counts a failure) when it fails.

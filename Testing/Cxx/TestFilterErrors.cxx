@@ -1,6 +1,6 @@
 // Error paths and properties of vtkCoarseGrainedMeshAdaptation: non-tetrahedral input, a missing
 // region array, partitioning by region without one, empty input, ParaView's "None" region choice,
-// defaults, clamping, the colouring setters and PrintSelf.
+// defaults, clamping (improvement passes included), the colouring setters and PrintSelf.
 #include "FilterTestSupport.h"
 
 #include "vtkCellData.h"
@@ -180,6 +180,15 @@ void test_defaultsAndClamping()
     "ColoringAlgorithm default");
   CGMESH_CHECK(!filter->GetPartitionByRegion(), "PartitionByRegion default");
   CGMESH_CHECK(filter->GetPartitionsPerRegion() == 1, "PartitionsPerRegion default");
+  CGMESH_CHECK(filter->GetImproveQuality(), "ImproveQuality default");
+  CGMESH_CHECK(filter->GetNumberOfImprovementPasses() == 2, "NumberOfImprovementPasses default");
+  filter->SetNumberOfImprovementPasses(-1);
+  CGMESH_CHECK(filter->GetNumberOfImprovementPasses() == 0, "improvement passes not clamped to 0");
+  filter->SetNumberOfImprovementPasses(50);
+  CGMESH_CHECK(
+    filter->GetNumberOfImprovementPasses() == 20, "improvement passes not clamped to 20");
+  filter->ImproveQualityOff();
+  CGMESH_CHECK(!filter->GetImproveQuality(), "ImproveQualityOff");
   filter->SetNumberOfPartitions(0);
   filter->SetNumberOfIterations(-3);
   filter->SetNumberOfThreads(-1);
@@ -190,9 +199,10 @@ void test_defaultsAndClamping()
   CGMESH_CHECK(filter->GetPartitionsPerRegion() == 1, "PartitionsPerRegion not clamped to 1");
   std::ostringstream printed;
   filter->Print(printed);
-  for (const char* member : { "NumberOfPartitions", "NumberOfIterations", "MaximumEdgeLength",
-         "EdgeLengthFactor", "NumberOfThreads", "RegionArrayName", "ColoringAlgorithm", "greedy-lu",
-         "PartitionByRegion", "PartitionsPerRegion" })
+  for (const char* member :
+    { "NumberOfPartitions", "NumberOfIterations", "MaximumEdgeLength", "EdgeLengthFactor",
+      "NumberOfThreads", "RegionArrayName", "ColoringAlgorithm", "greedy-lu", "PartitionByRegion",
+      "PartitionsPerRegion", "ImproveQuality", "NumberOfImprovementPasses" })
   {
     CGMESH_CHECK(printed.str().find(member) != std::string::npos, "PrintSelf omits " << member);
   }

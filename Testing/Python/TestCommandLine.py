@@ -1,6 +1,7 @@
 """Drives the cgmesh executable: generate, refine (XML and legacy files, --stats, every colouring,
-partitioning by region, the Delaunay method), the serial tetgen baseline, check, --help, and the
-error paths (one line on stderr, non-zero exit, no output file)."""
+partitioning by region, the Delaunay method, quality improvement options and the quality summary),
+the serial tetgen baseline, check, --help, and the error paths (one line on stderr, non-zero exit,
+no output file)."""
 import argparse
 import json
 import os
@@ -46,7 +47,8 @@ def test_help(cgmesh):
     check("tetgen" in run(cgmesh, "--help").stdout, "cgmesh --help does not list tetgen")
     refine_help = run(cgmesh, "refine", "--help").stdout
     for text in ("--coloring", "--partition-by-region", "--partitions-per-region", *COLORINGS,
-                 "--method", "delaunay", "--max-volume", "--volume-factor", "--radius-edge-ratio"):
+                 "--method", "delaunay", "--max-volume", "--volume-factor", "--radius-edge-ratio",
+                 "--no-improve", "--improve-passes", "mean ratio", "NearFormerInterface"):
         check(text in refine_help, "refine --help does not mention " + text)
     tetgen_help = run(cgmesh, "tetgen", "--help").stdout
     for text in ("--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "rQq"):
@@ -226,6 +228,101 @@ def test_delaunay(cgmesh, scratch):
         check(json.load(handle)["volumeBound"] == 0.0005, "--max-volume is not the bound")
 
 
+# Computes the quality summary of a refined file from its cell arrays, as numpy does, to check the
+# figures cgmesh reports; prints them as JSON.
+QUALITY_FROM_ARRAYS = """import json, sys
+import numpy
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+reader = vtkXMLUnstructuredGridReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+cells = reader.GetOutput().GetCellData()
+angles = vtk_to_numpy(cells.GetArray("MinDihedralAngle"))
+ratios = vtk_to_numpy(cells.GetArray("EdgeRatio"))
+near = vtk_to_numpy(cells.GetArray("NearFormerInterface")) != 0
+summary = {}
+for name, chosen in (("all", near | ~near), ("interior", ~near), ("nearFormerInterfaces", near)):
+    summary[name] = {"tets": int(chosen.sum()), "minDihedralAngleMin": float(angles[chosen].min()),
+                     "minDihedralAngleP1": float(numpy.percentile(angles[chosen], 1)),
+                     "edgeRatioP99": float(numpy.percentile(ratios[chosen], 99))}
+print(json.dumps(summary))
+"""
+
+
+def refine_with_improvement_options(cgmesh, scratch, name, options):
+    """Refines the FinFET with `options`; returns (stats, table, output file) or None."""
+    finfet = os.path.join(scratch, "finfet.vtu")
+    refined = os.path.join(scratch, "finfet-%s.vtu" % name)
+    stats = os.path.join(scratch, "finfet-%s.json" % name)
+    result = run(cgmesh, "refine", finfet, refined, "--region-array", "Material", "--partitions",
+                 "8", "--edge-length-factor", "1.0", "--threads", "2", "--stats", stats, *options)
+    check(result.returncode == 0, "refine %s: %s" % (" ".join(options), result.stderr))
+    if result.returncode != 0:
+        return None
+    with open(stats) as handle:
+        return json.load(handle), result.stdout, refined
+
+
+def check_quality_summary(statistics, refined, description):
+    """The quality summary splits the tets by NearFormerInterface and matches numpy's figures."""
+    quality = statistics["quality"]
+    check(quality["interior"]["tets"] + quality["nearFormerInterfaces"]["tets"]
+          == quality["all"]["tets"] == statistics["output"]["cells"],
+          description + ": the quality groups do not add up to the output cells")
+    check(quality["interior"]["tets"] > 0 and quality["nearFormerInterfaces"]["tets"] > 0,
+          description + ": a quality group is empty")
+    result = subprocess.run([sys.executable, "-c", QUALITY_FROM_ARRAYS, refined],
+                            capture_output=True, text=True)
+    check(result.returncode == 0, description + ": cannot read the output: " + result.stderr)
+    if result.returncode != 0:
+        return
+    expected = json.loads(result.stdout)
+    for group, figures in expected.items():
+        for key, value in figures.items():
+            check(abs(quality[group][key] - value) <= 1e-9 * max(1.0, abs(value)),
+                  "%s: quality %s %s is %s, numpy says %s"
+                  % (description, group, key, quality[group][key], value))
+
+
+def test_improvement_options(cgmesh, scratch):
+    """--no-improve and --improve-passes reach the filter and the reports; the quality summary
+    is right and improvement raises the worst quality of the FinFET."""
+    runs = {}
+    for name, options in (("improved", []), ("passes-3", ["--improve-passes", "3"]),
+                          ("passes-0", ["--improve-passes", "0"]),
+                          ("not-improved", ["--no-improve"])):
+        runs[name] = refine_with_improvement_options(cgmesh, scratch, name, options)
+        if runs[name] is None:
+            return
+    improved, table, refined = runs["improved"]
+    for text in ("improvement", "edge removals", "face swaps", "vertex moves", "improve seconds",
+                 "interior", "near former interfaces", "min dihedral p1", "edge ratio p99"):
+        check(text in table, "the table lacks " + text)
+    improvement = improved["improvement"]
+    check(improvement["enabled"] is True and improvement["passes"] == 2, "improvement defaults")
+    check(improvement["edgeRemovals"] + improvement["faceSwaps"] + improvement["vertexMoves"] > 0,
+          "the default run improved nothing")
+    check(improvement["seconds"] == improved["seconds"]["improve"]
+          and 0 < improvement["shareOfTotal"] < 1, "improve seconds and share in stats")
+    check_quality_summary(improved, refined, "improved")
+    check(runs["passes-3"][0]["improvement"]["passes"] == 3, "--improve-passes 3 in stats")
+    for name in ("passes-0", "not-improved"):
+        statistics, _, output = runs[name]
+        figures = statistics["improvement"]
+        check(figures["edgeRemovals"] == figures["faceSwaps"] == figures["vertexMoves"] == 0,
+              name + ": improvement counts are not 0")
+        check_quality_summary(statistics, output, name)
+    check(runs["not-improved"][0]["improvement"]["enabled"] is False, "--no-improve in stats")
+    check("improvement             off" in runs["not-improved"][1], "the table lacks 'off'")
+    before = runs["not-improved"][0]["quality"]["all"]
+    after = improved["quality"]["all"]
+    check(after["edgeRatioP99"] < before["edgeRatioP99"],
+          "improvement did not lower the 99th percentile of the edge ratio: %s" % after)
+    check(run(cgmesh, "check", refined, "--region-array", "Material").returncode == 0,
+          "check the improved FinFET")
+
+
 def test_tetgen(cgmesh, scratch):
     """The serial baseline on the FinFET: valid, every region's volume kept, quality arrays and
     stats written."""
@@ -321,6 +418,10 @@ def test_errors(cgmesh, scratch):
                                 "0.01", "--volume-factor", "0.1"]),
         ("radius-edge ratio below 1", ["refine", cube, out, "--method", "delaunay",
                                        "--radius-edge-ratio", "0.5"]),
+        ("too many improvement passes", ["refine", cube, out, "--improve-passes", "21"]),
+        ("negative improvement passes", ["refine", cube, out, "--improve-passes", "-1"]),
+        ("no-improve with passes", ["refine", cube, out, "--no-improve", "--improve-passes", "2"]),
+        ("no-improve with a value", ["refine", cube, out, "--no-improve=yes"]),
         ("tetgen without --max-volume", ["tetgen", cube, out]),
         ("tetgen with a zero bound", ["tetgen", cube, out, "--max-volume", "0"]),
         ("tetgen unknown option", ["tetgen", cube, out, "--max-volume", "0.01", "--threads", "2"]),
@@ -346,6 +447,7 @@ def main():
     test_colorings(options.cgmesh, options.scratch)
     test_partition_by_region(options.cgmesh, options.scratch)
     test_delaunay(options.cgmesh, options.scratch)
+    test_improvement_options(options.cgmesh, options.scratch)
     test_tetgen(options.cgmesh, options.scratch)
     test_errors(options.cgmesh, options.scratch)
     if FAILURES:
