@@ -94,13 +94,14 @@ struct AdaptationResult
   // Seconds each partition's heal and refinement took, per iteration: entry
   // iteration * numberOfPartitions + partition (the data for makespan models).
   std::vector<double> partitionTaskSeconds;
-  std::vector<int> colorOfPartition; // the refinement colouring
+  std::vector<int> colorOfPartition;            // the refinement colouring
   std::vector<std::int64_t> partitionsPerColor; // colour population, in partitions
   std::vector<std::int64_t> cellsPerColor;      // colour population, in output tets
   double colorBalance = 0;                      // largest colour set / mean (partitions)
   std::int64_t edgeRemovals = 0;                // quality improvement operations
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
+  std::int64_t poorTets = 0; // tets below the improvement target when first looked at
   // Per output tet: 1 when it touches a vertex that lay on an interface between refinement
   // partitions (to compare quality near former interfaces with the interior).
   std::vector<char> nearFormerInterface;

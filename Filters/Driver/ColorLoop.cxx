@@ -197,6 +197,7 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
     result.edgeRemovals += statistics[i].edgeRemovals;
     result.faceSwaps += statistics[i].faceSwaps;
     result.vertexMoves += statistics[i].vertexMoves;
+    result.poorTets += statistics[i].poorTets;
     if (!outcomes[i].ok())
     {
       return outcomes[i];

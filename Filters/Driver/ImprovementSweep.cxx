@@ -14,8 +14,8 @@ namespace
 {
 
 // Splits the bounding box into cells x cells x cells boxes; a tet goes to the box of its centroid.
-std::vector<PartitionMesh> regroupIntoBoxes(
-  std::vector<PartitionMesh>& partitions, const std::vector<double>& coordinates, int cells)
+std::vector<PartitionMesh> regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
+  const std::vector<double>& coordinates, int cells, double shift)
 {
   double low[3], size[3];
   for (int axis = 0; axis < 3; ++axis)
@@ -26,10 +26,11 @@ std::vector<PartitionMesh> regroupIntoBoxes(
       lowest = std::min(lowest, coordinates[p]);
       highest = std::max(highest, coordinates[p]);
     }
-    low[axis] = lowest;
     size[axis] = highest > lowest ? (highest - lowest) / cells : 1.0;
+    low[axis] = lowest - shift * size[axis];
   }
-  std::vector<PartitionMesh> boxes(static_cast<std::size_t>(cells) * cells * cells);
+  // One more box per axis than cells, for the shifted layout's far ends.
+  std::vector<PartitionMesh> boxes(static_cast<std::size_t>(cells + 1) * (cells + 1) * (cells + 1));
   for (PartitionMesh& partition : partitions)
   {
     for (std::size_t t = 0; t < partition.tets.size(); ++t)
@@ -42,9 +43,9 @@ std::vector<PartitionMesh> regroupIntoBoxes(
         {
           centroid += 0.25 * coordinates[3 * p + axis];
         }
-        const int index = std::max(0,
-          std::min(cells - 1, static_cast<int>(std::floor((centroid - low[axis]) / size[axis]))));
-        box = box * cells + index;
+        const int index = std::max(
+          0, std::min(cells, static_cast<int>(std::floor((centroid - low[axis]) / size[axis]))));
+        box = box * (cells + 1) + index;
       }
       PartitionMesh& target = boxes[box];
       target.tets.push_back(partition.tets[t]);
@@ -71,24 +72,19 @@ PartitionGraph graphOfPartitions(const std::vector<PartitionMesh>& partitions, P
   return buildPartitionGraph(tets, partitionOfCell, static_cast<int>(partitions.size()), points);
 }
 
-} // namespace
-
-Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
-  const AdaptationOptions& options, int boxes, AdaptationState& state, AdaptationResult& result)
+// One improvement sweep over box partitions of the given layout.
+Status improveOverBoxes(const ColorLoopSetup& refinementSetup, const AdaptationOptions& options,
+  int cells, double shift, AdaptationState& state, AdaptationResult& result)
 {
-  const auto start = std::chrono::steady_clock::now();
-  const int cells = std::max(1, static_cast<int>(std::lround(std::cbrt(std::max(1, boxes)))));
-  state.partitions = regroupIntoBoxes(state.partitions, state.coordinates, cells);
+  state.partitions = regroupIntoBoxes(state.partitions, state.coordinates, cells, shift);
   const PartitionGraph graph =
     graphOfPartitions(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
-
   std::vector<int> colorOfBox;
   Status status = colorPartitions(graph, options.coloring, refinementSetup.threads, colorOfBox);
   if (!status.ok())
   {
     return status;
   }
-
   ColorLoopSetup sweep = refinementSetup;
   sweep.graph = &graph;
   sweep.colorOfPartition = &colorOfBox;
@@ -96,9 +92,32 @@ Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
   sweep.numberOfIterations = 1;
   sweep.refine = false;
   sweep.improve = true;
+  return runColorLoop(sweep, options, state, result);
+}
+
+} // namespace
+
+Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
+  const AdaptationOptions& options, int boxes, AdaptationState& state, AdaptationResult& result)
+{
+  if (result.poorTets == 0)
+  {
+    return Status::success(); // nothing was below the target: no seam to work on
+  }
+  const auto start = std::chrono::steady_clock::now();
   const double improveBefore = result.seconds.improve;
-  status = runColorLoop(sweep, options, state, result);
-  // The whole sweep counts as improvement (regrouping and colouring included).
+  const int cells = std::max(1, static_cast<int>(std::lround(std::cbrt(std::max(1, boxes)))));
+  // Box faces freeze vertices in their turn: a second layout shifted by half a box frees them.
+  Status status = Status::success();
+  for (double shift : { 0.0, 0.5 })
+  {
+    status = improveOverBoxes(refinementSetup, options, cells, shift, state, result);
+    if (!status.ok() || result.aborted)
+    {
+      break;
+    }
+  }
+  // The sweeps count as improvement, regrouping and colouring included.
   result.seconds.improve =
     improveBefore + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return status;

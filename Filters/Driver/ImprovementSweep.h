@@ -1,7 +1,9 @@
 // The second quality sweep. During refinement every vertex on an interface between partitions is
 // frozen, so the tets around interfaces keep their template shapes. This sweep regroups the mesh
 // into box-shaped partitions that cut across the refinement partitions, so that most former
-// interfaces lie inside a partition, and runs quality improvement once more over a new colouring.
+// interfaces lie inside a partition, and runs quality improvement once more over a new colouring;
+// then again over boxes shifted by half a box, whose insides hold the first layout's box faces.
+// Skipped when refinement left no tet below the improvement target.
 #ifndef cgmesh_ImprovementSweep_h
 #define cgmesh_ImprovementSweep_h
 

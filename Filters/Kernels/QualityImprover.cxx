@@ -637,13 +637,14 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   {
     return Status::success();
   }
-  const bool anyPoorTet = std::any_of(partition.tets.begin(), partition.tets.end(),
+  const auto poorTets = std::count_if(partition.tets.begin(), partition.tets.end(),
     [&](const Tet& t)
     {
       return meanRatio(points.at(t[0]), points.at(t[1]), points.at(t[2]), points.at(t[3])) <
         parameters.targetQuality;
     });
-  if (!anyPoorTet)
+  statistics.poorTets += poorTets;
+  if (poorTets == 0)
   {
     return Status::success(); // nothing to work on: skip building the local structures
   }

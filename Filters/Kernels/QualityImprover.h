@@ -33,6 +33,7 @@ struct ImprovementStatistics
   std::int64_t edgeRemovals = 0;
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
+  std::int64_t poorTets = 0; // tets below the target when the partition was taken up
 };
 
 // Where a partition's points live: global ids in `global`, provisional ids (see
