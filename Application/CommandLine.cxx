@@ -261,7 +261,8 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
   if (!status.ok())
     return status;
   if (positionals.empty())
-    return Status::failure("expected 'cube N OUT.vtu' or 'finfet OUT.vtu [--cells N]'");
+    return Status::failure("expected 'cube N OUT.vtu', 'finfet OUT.vtu [--cells N]' or "
+                           "'finfet-grid OUT.vtu [--cells N]'");
   parsed.shape = positionals[0];
   if (parsed.shape == "cube")
   {
@@ -273,9 +274,9 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
     parsed.outputFile = positionals[2];
     return parseInt(positionals[1], "N", 1, 1000, parsed.cellsPerSide);
   }
-  if (parsed.shape == "finfet")
+  if (parsed.shape == "finfet" || parsed.shape == "finfet-grid")
   {
-    status = checkPositionalCount(positionals, 2, "finfet OUT.vtu [--cells N]");
+    status = checkPositionalCount(positionals, 2, parsed.shape + " OUT.vtu [--cells N]");
     if (!status.ok())
       return status;
     parsed.outputFile = positionals[1];
@@ -289,7 +290,8 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
     }
     return Status::success();
   }
-  return Status::failure("unknown shape '" + parsed.shape + "' (use 'cube' or 'finfet')");
+  return Status::failure(
+    "unknown shape '" + parsed.shape + "' (use 'cube', 'finfet' or 'finfet-grid')");
 }
 
 Status parseTetGenArguments(const std::vector<std::string>& arguments, TetGenArguments& parsed)

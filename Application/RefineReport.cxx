@@ -42,6 +42,17 @@ std::vector<std::int64_t> fieldValues(vtkFieldData* fieldData, const char* name)
   return values;
 }
 
+std::vector<double> fieldReals(vtkFieldData* fieldData, const char* name)
+{
+  std::vector<double> values;
+  vtkDataArray* array = fieldData->GetArray(name);
+  for (vtkIdType tuple = 0; array && tuple < array->GetNumberOfTuples(); ++tuple)
+  {
+    values.push_back(array->GetComponent(tuple, 0));
+  }
+  return values;
+}
+
 std::string fieldString(vtkFieldData* fieldData, const char* name)
 {
   auto* array = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray(name));
@@ -250,6 +261,8 @@ void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& stat
   statistics.edgeRemovals = static_cast<std::int64_t>(fieldValue(fieldData, "EdgeRemovals"));
   statistics.faceSwaps = static_cast<std::int64_t>(fieldValue(fieldData, "FaceSwaps"));
   statistics.vertexMoves = static_cast<std::int64_t>(fieldValue(fieldData, "VertexMoves"));
+  statistics.partitionTaskSeconds = fieldReals(fieldData, "PartitionTaskSeconds");
+  statistics.colorOfPartition = fieldValues(fieldData, "ColorOfPartition");
   collectQualitySummaries(output, statistics);
   for (const auto& phase : FilterPhases)
   {
@@ -334,6 +347,13 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ")
        << "],\n";
   writeImprovementJson(statistics, file);
+  file << "  \"colorOfPartition\": [" << joinValues(statistics.colorOfPartition, ", ") << "],\n"
+       << "  \"partitionTaskSeconds\": [";
+  for (size_t index = 0; index < statistics.partitionTaskSeconds.size(); ++index)
+  {
+    file << (index ? ", " : "") << statistics.partitionTaskSeconds[index];
+  }
+  file << "],\n";
   file << "  \"seconds\": {";
   for (size_t index = 0; index < statistics.seconds.size(); ++index)
   {

@@ -54,6 +54,8 @@ struct RefineStatistics
   std::int64_t edgeRemovals = 0; // improvement operations
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
+  std::vector<double> partitionTaskSeconds; // iteration * partitions + partition
+  std::vector<std::int64_t> colorOfPartition;
   QualitySummary allTets;
   QualitySummary interiorTets;      // NearFormerInterface 0
   QualitySummary nearInterfaceTets; // NearFormerInterface 1: touching a former interface vertex

@@ -172,6 +172,21 @@ void addFieldData(const cgmesh::AdaptationResult& result, vtkCoarseGrainedMeshAd
   addFieldValue(fieldData, "EdgeRemovals", static_cast<double>(result.edgeRemovals));
   addFieldValue(fieldData, "FaceSwaps", static_cast<double>(result.faceSwaps));
   addFieldValue(fieldData, "VertexMoves", static_cast<double>(result.vertexMoves));
+  // Per-partition task times and the colouring: the data for makespan models of the colour loop.
+  vtkNew<vtkDoubleArray> taskSeconds; // entry iteration * NumberOfPartitions + partition
+  taskSeconds->SetName("PartitionTaskSeconds");
+  for (const double seconds : result.partitionTaskSeconds)
+  {
+    taskSeconds->InsertNextValue(seconds);
+  }
+  fieldData->AddArray(taskSeconds);
+  vtkNew<vtkIntArray> colorOfPartition;
+  colorOfPartition->SetName("ColorOfPartition");
+  for (const int color : result.colorOfPartition)
+  {
+    colorOfPartition->InsertNextValue(color);
+  }
+  fieldData->AddArray(colorOfPartition);
   const cgmesh::PhaseSeconds& seconds = result.seconds;
   addFieldValue(fieldData, "PartitionSeconds", seconds.partition);
   addFieldValue(fieldData, "GraphSeconds", seconds.graph);
