@@ -7,6 +7,7 @@
 #include "VTKMessages.h"
 
 #include "vtkCoarseGrainedMeshAdaptation.h"
+#include "vtkCommand.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkUnstructuredGrid.h"
@@ -14,6 +15,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <unistd.h>
 
 namespace cgmesh
 {
@@ -108,6 +110,30 @@ void configureFilter(const RefineArguments& arguments, vtkCoarseGrainedMeshAdapt
   filter->SetNumberOfImprovementPasses(arguments.improvementPasses);
 }
 
+// Draws the filter's progress as a bar on stderr; only on a terminal, so logs and pipes stay clean.
+class ProgressBar : public vtkCommand
+{
+public:
+  static ProgressBar* New() { return new ProgressBar; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    const double fraction = *static_cast<double*>(callData);
+    const int width = 40;
+    const int filled = static_cast<int>(fraction * width + 0.5);
+    if (filled == this->LastFilled)
+    {
+      return;
+    }
+    this->LastFilled = filled;
+    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] "
+              << static_cast<int>(100 * fraction + 0.5) << "%" << (fraction >= 1.0 ? "\n" : "")
+              << std::flush;
+  }
+
+private:
+  int LastFilled = -1;
+};
+
 // Runs the filter on `input`; on success `output` holds the refined grid.
 Status refineGrid(
   const RefineArguments& arguments, vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
@@ -116,6 +142,11 @@ Status refineGrid(
   vtkNew<VTKMessageCollector> messages;
   messages->watch(filter);
   configureFilter(arguments, filter);
+  if (::isatty(STDERR_FILENO))
+  {
+    vtkNew<ProgressBar> progressBar;
+    filter->AddObserver(vtkCommand::ProgressEvent, progressBar);
+  }
   filter->SetInputData(input);
   filter->Update();
   for (const std::string& warning : messages->warnings())

@@ -14,12 +14,21 @@ void printUsage(std::ostream& stream)
             "\n"
             "commands:\n"
             "  refine IN OUT [options]   refine a tetrahedral mesh (.vtu or .vtk)\n"
-            "  generate cube N OUT.vtu   write the unit cube as N^3 hexahedra of 6 tetrahedra\n"
+            "  generate cube N OUT.vtu | finfet OUT.vtu | finfet-grid OUT.vtu\n"
+            "                            write a benchmark mesh\n"
             "  tetgen IN OUT --max-volume V [options]\n"
             "                            serial TetGen on the whole mesh (Delaunay baseline)\n"
             "  check IN [options]        report conformity, orientation, volume and areas\n"
             "\n"
-            "Run 'cgmesh <command> --help' for the options of a command.\n";
+            "Run 'cgmesh <command> --help' for the options of a command.\n"
+            "\n"
+            "exit status:\n"
+            "  0  success (check: the mesh is valid)\n"
+            "  1  failure: bad input, failed refinement, unwritable output (one line on stderr;\n"
+            "     no output file is left behind); check: the mesh is not valid\n"
+            "  2  usage error: unknown command or option, bad value\n"
+            "\n"
+            "refine shows a progress bar on stderr when stderr is a terminal.\n";
 }
 
 } // namespace
