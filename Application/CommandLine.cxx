@@ -53,6 +53,21 @@ Status parseDouble(const std::string& text, const std::string& what, double mini
   return Status::success();
 }
 
+Status parseCount(
+  const std::string& text, const std::string& what, long long minimum, long long& value)
+{
+  errno = 0;
+  char* end = nullptr;
+  const long long parsed = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno == ERANGE || parsed < minimum)
+  {
+    return Status::failure(
+      what + " must be an integer >= " + std::to_string(minimum) + ", got '" + text + "'");
+  }
+  value = parsed;
+  return Status::success();
+}
+
 namespace
 {
 
@@ -219,6 +234,8 @@ Status applyRefineOption(const std::string& name, const std::string& value, Refi
   }
   if (name == "--improve-passes")
     return parseInt(value, name, 0, 20, parsed.improvementPasses);
+  if (name == "--max-cells")
+    return parseCount(value, name, 0, parsed.maximumNumberOfCells);
   if (name == "--stats")
   {
     parsed.statsFile = value;

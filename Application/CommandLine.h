@@ -25,12 +25,13 @@ struct RefineArguments
   double radiusEdgeRatio = 2.0;    // delaunay: TetGen's q
   int numberOfThreads = 0;         // 0 = all cores
   std::string regionArrayName;
-  std::string coloring = "greedy-lu"; // a vtkCoarseGrainedMeshAdaptation colouring name
-  bool partitionByRegion = false;     // cut along the regions of regionArrayName
-  int partitionsPerRegion = 1;        // with partitionByRegion
-  bool improveQuality = true;         // --no-improve turns it off
-  int improvementPasses = 2;          // --improve-passes, in [0, 20]
-  std::string statsFile;              // JSON statistics, written when not empty
+  std::string coloring = "greedy-lu";         // a vtkCoarseGrainedMeshAdaptation colouring name
+  bool partitionByRegion = false;             // cut along the regions of regionArrayName
+  int partitionsPerRegion = 1;                // with partitionByRegion
+  bool improveQuality = true;                 // --no-improve turns it off
+  int improvementPasses = 2;                  // --improve-passes, in [0, 20]
+  long long maximumNumberOfCells = 100000000; // --max-cells, 0 = no limit
+  std::string statsFile;                      // JSON statistics, written when not empty
 };
 
 struct GenerateArguments
@@ -71,6 +72,9 @@ Status parseCheckArguments(const std::vector<std::string>& arguments, CheckArgum
 Status parseInt(
   const std::string& text, const std::string& what, int minimum, int maximum, int& value);
 Status parseDouble(const std::string& text, const std::string& what, double minimum, double& value);
+// Strict parsing of a 64-bit count: the whole text must be an integer >= minimum.
+Status parseCount(
+  const std::string& text, const std::string& what, long long minimum, long long& value);
 
 } // namespace cgmesh
 

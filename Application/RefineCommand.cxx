@@ -31,7 +31,7 @@ void printRefineUsage()
        "                     [--method template] [--max-edge-length L | --edge-length-factor F]\n"
        "                     [--method delaunay [--max-volume V | --volume-factor F]\n"
        "                      [--radius-edge-ratio Q]] [--threads T]\n"
-       "                     [--no-improve | --improve-passes N]\n"
+       "                     [--no-improve | --improve-passes N] [--max-cells N]\n"
        "                     [--region-array NAME] [--coloring NAME] [--stats FILE.json]\n"
        "\n"
        "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
@@ -68,6 +68,10 @@ void printRefineUsage()
        "                          vertices stay fixed; a second sweep over box partitions\n"
        "                          improves the tets around the former partition interfaces\n"
        "  --threads T             OpenMP threads, 0 = all cores (default 0)\n"
+       "  --max-cells N           size guard (MaximumNumberOfCells): refuse, with an error and\n"
+       "                          no output file, a refinement forecast to produce more than N\n"
+       "                          tetrahedra, before it allocates them; 0 = no limit\n"
+       "                          (default 100000000)\n"
        "  --region-array NAME     cell array with material/region ids\n"
        "  --coloring NAME         colouring of the partition graph (default greedy-lu):\n"
        "                            greedy      first fit, serial, unbalanced\n"
@@ -108,6 +112,7 @@ void configureFilter(const RefineArguments& arguments, vtkCoarseGrainedMeshAdapt
   filter->SetPartitionsPerRegion(arguments.partitionsPerRegion);
   filter->SetImproveQuality(arguments.improveQuality);
   filter->SetNumberOfImprovementPasses(arguments.improvementPasses);
+  filter->SetMaximumNumberOfCells(static_cast<vtkIdType>(arguments.maximumNumberOfCells));
 }
 
 // Draws the filter's progress as a bar on stderr; only on a terminal, so logs and pipes stay clean.

@@ -24,6 +24,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -147,6 +149,46 @@ void interpolatePointData(vtkPointData* inputPointData, const cgmesh::PointProve
   }
 }
 
+// vtkDataSetAttributes never interpolates vtkIdTypeArrays; plain ones (not global or pedigree
+// ids, which have no values between points) are interpolated here like other integer arrays:
+// the provenance-weighted sum, rounded to the nearest integer.
+void interpolateIdTypeArrays(vtkPointData* inputPointData,
+  const cgmesh::PointProvenance& provenance, vtkPointData* outputPointData)
+{
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(provenance.offsets.size()) - 1;
+  for (int index = 0; index < inputPointData->GetNumberOfArrays(); ++index)
+  {
+    auto* source = vtkIdTypeArray::SafeDownCast(inputPointData->GetAbstractArray(index));
+    const int attribute = inputPointData->IsArrayAnAttribute(index);
+    if (!source || !source->GetName() || outputPointData->GetAbstractArray(source->GetName()) ||
+      attribute == vtkDataSetAttributes::GLOBALIDS ||
+      attribute == vtkDataSetAttributes::PEDIGREEIDS)
+    {
+      continue;
+    }
+    const int components = source->GetNumberOfComponents();
+    vtkNew<vtkIdTypeArray> interpolated;
+    interpolated->SetName(source->GetName());
+    interpolated->SetNumberOfComponents(components);
+    interpolated->SetNumberOfTuples(numberOfPoints);
+    for (vtkIdType pointId = 0; pointId < numberOfPoints; ++pointId)
+    {
+      for (int component = 0; component < components; ++component)
+      {
+        double value = 0;
+        for (auto entry = provenance.offsets[pointId]; entry < provenance.offsets[pointId + 1];
+             ++entry)
+        {
+          value += provenance.weights[entry] *
+            static_cast<double>(source->GetTypedComponent(provenance.sources[entry], component));
+        }
+        interpolated->SetTypedComponent(pointId, component, std::llround(value));
+      }
+    }
+    outputPointData->AddArray(interpolated);
+  }
+}
+
 void addFieldData(const cgmesh::AdaptationResult& result, vtkCoarseGrainedMeshAdaptation* filter,
   double qualitySeconds, double totalSeconds, vtkFieldData* fieldData)
 {
@@ -219,6 +261,7 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter)
   options.partitionsPerRegion = filter->GetPartitionsPerRegion();
   options.improveQuality = filter->GetImproveQuality();
   options.improvementPasses = filter->GetNumberOfImprovementPasses();
+  options.maximumNumberOfCells = static_cast<std::int64_t>(filter->GetMaximumNumberOfCells());
   // The driver calls both hooks on the calling thread only.
   options.progress = [filter](double fraction, const char*)
   {
@@ -260,6 +303,7 @@ void fillOutput(
   cgmesh::convertToUnstructuredGrid(result.mesh, output);
   copyCellDataToChildren(input->GetCellData(), result.parentCell, output->GetCellData());
   interpolatePointData(input->GetPointData(), result.provenance, output->GetPointData());
+  interpolateIdTypeArrays(input->GetPointData(), result.provenance, output->GetPointData());
   output->GetCellData()->AddArray(makeCellIntArray("PartitionId", result.partitionOfCell));
   output->GetCellData()->AddArray(makeCellIntArray("ColorId", result.colorOfCell));
   vtkNew<vtkUnsignedCharArray> nearFormerInterface;
@@ -292,6 +336,7 @@ vtkCoarseGrainedMeshAdaptation::vtkCoarseGrainedMeshAdaptation()
   , PartitionsPerRegion(1)
   , ImproveQuality(true)
   , NumberOfImprovementPasses(2)
+  , MaximumNumberOfCells(100000000)
 {
 }
 
@@ -446,4 +491,6 @@ void vtkCoarseGrainedMeshAdaptation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PartitionsPerRegion: " << this->PartitionsPerRegion << "\n";
   os << indent << "ImproveQuality: " << (this->ImproveQuality ? "on" : "off") << "\n";
   os << indent << "NumberOfImprovementPasses: " << this->NumberOfImprovementPasses << "\n";
+  os << indent << "MaximumNumberOfCells: " << this->MaximumNumberOfCells
+     << (this->MaximumNumberOfCells == 0 ? " (no limit)" : "") << "\n";
 }

@@ -175,6 +175,16 @@ public:
 
   ///@{
   /**
+   * Size guard: a refinement iteration forecast to produce more tetrahedra than this is refused
+   * with an error (and an empty output) before anything large is allocated. 0 means no limit.
+   * Default 100000000.
+   */
+  vtkSetClampMacro(MaximumNumberOfCells, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumNumberOfCells, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * Number of OpenMP threads; 0 (default) uses all cores. The output does not depend on it.
    */
   vtkSetClampMacro(NumberOfThreads, int, 0, VTK_INT_MAX);
@@ -282,6 +292,7 @@ protected:
   int PartitionsPerRegion;
   bool ImproveQuality;
   int NumberOfImprovementPasses;
+  vtkIdType MaximumNumberOfCells;
 
 private:
   vtkCoarseGrainedMeshAdaptation(const vtkCoarseGrainedMeshAdaptation&) = delete;

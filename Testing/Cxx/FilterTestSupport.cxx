@@ -5,6 +5,7 @@
 #include "cgmeshVTKConversion.h"
 #include "vtkCoarseGrainedMeshAdaptation.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -17,6 +18,7 @@
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkVariant.h"
 
 #include <algorithm>
 #include <array>
@@ -94,6 +96,31 @@ bool sameBytes(vtkDataArray* first, vtkDataArray* second)
   return bytes == 0 || std::memcmp(first->GetVoidPointer(0), second->GetVoidPointer(0), bytes) == 0;
 }
 
+// Numeric arrays byte for byte, other arrays (strings, variants) value by value.
+bool sameValues(vtkAbstractArray* first, vtkAbstractArray* second)
+{
+  auto* firstNumbers = vtkDataArray::SafeDownCast(first);
+  auto* secondNumbers = vtkDataArray::SafeDownCast(second);
+  if (firstNumbers || secondNumbers)
+  {
+    return sameBytes(firstNumbers, secondNumbers);
+  }
+  if (!first || !second || first->GetDataType() != second->GetDataType() ||
+    first->GetNumberOfValues() != second->GetNumberOfValues() ||
+    first->GetNumberOfComponents() != second->GetNumberOfComponents())
+  {
+    return false;
+  }
+  for (vtkIdType index = 0; index < first->GetNumberOfValues(); ++index)
+  {
+    if (!(first->GetVariantValue(index) == second->GetVariantValue(index)))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 bool sameArrays(vtkFieldData* first, vtkFieldData* second, std::string& difference)
 {
   if (first->GetNumberOfArrays() != second->GetNumberOfArrays())
@@ -103,9 +130,9 @@ bool sameArrays(vtkFieldData* first, vtkFieldData* second, std::string& differen
   }
   for (int index = 0; index < first->GetNumberOfArrays(); ++index)
   {
-    vtkDataArray* array = first->GetArray(index);
+    vtkAbstractArray* array = first->GetAbstractArray(index);
     const char* name = array ? array->GetName() : nullptr;
-    if (!name || !sameBytes(array, second->GetArray(name)))
+    if (!name || !sameValues(array, second->GetAbstractArray(name)))
     {
       difference = std::string("array ") + (name ? name : "(unnamed)") + " differs";
       return false;

@@ -74,7 +74,8 @@ void checkOutputArrays(vtkUnstructuredGrid* output);
 // `regionArrayName` is not empty.
 cgmesh::MeshReport inspectGrid(vtkUnstructuredGrid* grid, const std::string& regionArrayName);
 
-// Points, connectivity, cell types and every point and cell array bit-identical.
+// Points, connectivity, cell types and every point and cell array bit-identical (arrays that are
+// not numeric, such as vtkStringArray, value by value).
 bool identicalGrids(
   vtkUnstructuredGrid* first, vtkUnstructuredGrid* second, std::string& difference);
 

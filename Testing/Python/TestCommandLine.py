@@ -48,7 +48,8 @@ def test_help(cgmesh):
     refine_help = run(cgmesh, "refine", "--help").stdout
     for text in ("--coloring", "--partition-by-region", "--partitions-per-region", *COLORINGS,
                  "--method", "delaunay", "--max-volume", "--volume-factor", "--radius-edge-ratio",
-                 "--no-improve", "--improve-passes", "mean ratio", "NearFormerInterface"):
+                 "--no-improve", "--improve-passes", "mean ratio", "NearFormerInterface",
+                 "--max-cells"):
         check(text in refine_help, "refine --help does not mention " + text)
     tetgen_help = run(cgmesh, "tetgen", "--help").stdout
     for text in ("--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "rQq"):
@@ -393,6 +394,7 @@ def test_errors(cgmesh, scratch):
         ("tetgen non-tetrahedral input", ["tetgen", hexahedron, out, "--max-volume", "0.01"]),
         ("tetgen missing region array", ["tetgen", cube, out, "--max-volume", "0.01",
                                          "--region-array", "NoSuchArray"]),
+        ("size guard", ["refine", cube, out, "--max-cells", "100"]),
     ]
     for description, arguments in cases:
         expect_error(cgmesh, scratch, description, arguments, out)
@@ -422,6 +424,8 @@ def test_errors(cgmesh, scratch):
         ("negative improvement passes", ["refine", cube, out, "--improve-passes", "-1"]),
         ("no-improve with passes", ["refine", cube, out, "--no-improve", "--improve-passes", "2"]),
         ("no-improve with a value", ["refine", cube, out, "--no-improve=yes"]),
+        ("negative cell limit", ["refine", cube, out, "--max-cells", "-1"]),
+        ("non-integer cell limit", ["refine", cube, out, "--max-cells", "1e6"]),
         ("tetgen without --max-volume", ["tetgen", cube, out]),
         ("tetgen with a zero bound", ["tetgen", cube, out, "--max-volume", "0"]),
         ("tetgen unknown option", ["tetgen", cube, out, "--max-volume", "0.01", "--threads", "2"]),
@@ -429,6 +433,9 @@ def test_errors(cgmesh, scratch):
     ]
     for description, arguments in usage_cases:
         expect_error(cgmesh, scratch, description, arguments, out, exit_status=2)
+    result = run(cgmesh, "refine", cube, out, "--max-cells", "100")
+    check("limit of 100" in result.stderr and "MaximumNumberOfCells" in result.stderr,
+          "the size-guard error does not name the limit: " + result.stderr)
     result = run(cgmesh, "refine", cube, out, "--coloring", "rainbow")
     check("rainbow" in result.stderr and "greedy-lu" in result.stderr,
           "the unknown-colouring error does not name the choices: " + result.stderr)

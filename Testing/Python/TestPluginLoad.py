@@ -69,6 +69,8 @@ def main():
           "ColoringAlgorithm labels: %s" % labels)
     check(adaptation.PartitionByRegion == 0, "PartitionByRegion default")
     check(adaptation.PartitionsPerRegion == 1, "PartitionsPerRegion default")
+    check(adaptation.MaximumNumberOfCells == 100000000,
+          "MaximumNumberOfCells default: %s" % adaptation.MaximumNumberOfCells)
     adaptation.ColoringAlgorithm = "Recoloring"
     adaptation.NumberOfPartitions = 8
     adaptation.NumberOfIterations = 1
