@@ -64,18 +64,13 @@ void printReport(const MeshReport& report, std::ostream& stream)
 
 int runCheckCommand(const std::vector<std::string>& commandArguments)
 {
-  if (wantsHelp(commandArguments))
-  {
-    printCheckUsage();
-    return 0;
-  }
   CheckArguments arguments;
-  Status status = parseCheckArguments(commandArguments, arguments);
-  if (!status.ok())
+  const int early = startCommand(commandArguments, printCheckUsage, parseCheckArguments, arguments);
+  if (early >= 0)
   {
-    reportError(status.message());
-    return UsageErrorExitStatus;
+    return early;
   }
+  Status status = Status::success();
   vtkNew<vtkUnstructuredGrid> grid;
   status = readUnstructuredGrid(arguments.inputFile, grid);
   if (!status.ok())

@@ -2,6 +2,9 @@
 #ifndef cgmesh_Commands_h
 #define cgmesh_Commands_h
 
+#include "CommandLine.h"
+#include "Status.h"
+
 #include <string>
 #include <vector>
 
@@ -18,6 +21,26 @@ int reportError(const std::string& message);
 // Exit status for command-line usage errors (distinct from run-time failures).
 constexpr int UsageErrorExitStatus = 2;
 constexpr int FailureExitStatus = 1;
+
+// The common start of every command: with --help print the usage (exit 0); a parse error is a
+// usage error (exit 2). Returns the exit status to stop with, or -1 to go on with `arguments`.
+template <typename Arguments>
+int startCommand(const std::vector<std::string>& commandArguments, void (*printUsage)(),
+  Status (*parse)(const std::vector<std::string>&, Arguments&), Arguments& arguments)
+{
+  if (wantsHelp(commandArguments))
+  {
+    printUsage();
+    return 0;
+  }
+  const Status status = parse(commandArguments, arguments);
+  if (!status.ok())
+  {
+    reportError(status.message());
+    return UsageErrorExitStatus;
+  }
+  return -1;
+}
 
 } // namespace cgmesh
 

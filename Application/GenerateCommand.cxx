@@ -44,18 +44,14 @@ void printGenerateUsage()
 
 int runGenerateCommand(const std::vector<std::string>& commandArguments)
 {
-  if (wantsHelp(commandArguments))
-  {
-    printGenerateUsage();
-    return 0;
-  }
   GenerateArguments arguments;
-  Status status = parseGenerateArguments(commandArguments, arguments);
-  if (!status.ok())
+  const int early =
+    startCommand(commandArguments, printGenerateUsage, parseGenerateArguments, arguments);
+  if (early >= 0)
   {
-    reportError(status.message());
-    return UsageErrorExitStatus;
+    return early;
   }
+  Status status = Status::success();
 
   status = checkOutputFileName(arguments.outputFile);
   if (!status.ok())

@@ -190,18 +190,14 @@ void removeRunDependentFieldData(vtkUnstructuredGrid* grid)
 
 int runRefineCommand(const std::vector<std::string>& commandArguments)
 {
-  if (wantsHelp(commandArguments))
-  {
-    printRefineUsage();
-    return 0;
-  }
   RefineArguments arguments;
-  Status status = parseRefineArguments(commandArguments, arguments);
-  if (!status.ok())
+  const int early =
+    startCommand(commandArguments, printRefineUsage, parseRefineArguments, arguments);
+  if (early >= 0)
   {
-    reportError(status.message());
-    return UsageErrorExitStatus;
+    return early;
   }
+  Status status = Status::success();
 
   status = checkOutputFileName(arguments.outputFile);
   if (!status.ok())

@@ -198,18 +198,14 @@ void printTetGenTable(vtkUnstructuredGrid* output, const TetGenRun& run, std::os
 
 int runTetGenCommand(const std::vector<std::string>& commandArguments)
 {
-  if (wantsHelp(commandArguments))
-  {
-    printTetGenUsage();
-    return 0;
-  }
   TetGenArguments arguments;
-  Status status = parseTetGenArguments(commandArguments, arguments);
-  if (!status.ok())
+  const int early =
+    startCommand(commandArguments, printTetGenUsage, parseTetGenArguments, arguments);
+  if (early >= 0)
   {
-    reportError(status.message());
-    return UsageErrorExitStatus;
+    return early;
   }
+  Status status = Status::success();
   status = checkOutputFileName(arguments.outputFile);
   if (!status.ok())
     return reportError(status.message());

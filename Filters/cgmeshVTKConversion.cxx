@@ -100,9 +100,8 @@ Status copyRegions(vtkUnstructuredGrid* grid, const std::string& regionArrayName
 
 } // namespace
 
-Status convertToTetMesh(vtkUnstructuredGrid* grid,
-  const std::string& regionArrayName,
-  TetMesh& mesh)
+Status convertToTetMesh(
+  vtkUnstructuredGrid* grid, const std::string& regionArrayName, TetMesh& mesh)
 {
   mesh = TetMesh();
   if (grid->GetNumberOfPoints() > 0)
@@ -124,9 +123,8 @@ Status convertToTetMesh(vtkUnstructuredGrid* grid,
   return Status::success();
 }
 
-void convertToUnstructuredGrid(const TetMesh& mesh,
-  vtkUnstructuredGrid* grid,
-  const std::string& regionArrayName)
+void convertToUnstructuredGrid(
+  const TetMesh& mesh, vtkUnstructuredGrid* grid, const std::string& regionArrayName)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

@@ -97,8 +97,12 @@ void checkInvariants(const TetMesh& input, const AdaptationResult& result)
     std::cerr << after.describeProblems();
     fail("output is not a valid mesh");
   }
-  auto close = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); };
-  if (!close(after.volume, std::abs(before.volume)) || !close(after.boundaryArea, before.boundaryArea))
+  auto close = [](double a, double b)
+  {
+    return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b));
+  };
+  if (!close(after.volume, std::abs(before.volume)) ||
+    !close(after.boundaryArea, before.boundaryArea))
   {
     fail("volume or boundary area changed");
   }
@@ -139,8 +143,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.volumeFactor = 0.05 + 0.5 * bytes.unit();
   options.numberOfThreads = 1 + bytes.next() % 3;
   options.improveQuality = bytes.next() % 2 == 0;
-  options.coloring = std::vector<const char*>{ "greedy", "greedy-lu", "iterative",
-    "recoloring" }[bytes.next() % 4];
+  options.coloring =
+    std::vector<const char*>{ "greedy", "greedy-lu", "iterative", "recoloring" }[bytes.next() % 4];
   options.maximumNumberOfCells = 2000000;
 
   const bool inputValid = inspectMesh(input).isValid();
