@@ -191,6 +191,19 @@ std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) con
   {
     return "TetGen moved or renumbered input points";
   }
+  // Edges this much shorter than the partition are rounding noise, not refinement: TetGen can
+  // leave clusters of such points on some inputs.
+  double low[3] = { in.pointlist[0], in.pointlist[1], in.pointlist[2] };
+  double high[3] = { low[0], low[1], low[2] };
+  for (int p = 0; p < in.numberofpoints; ++p)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      low[axis] = std::min(low[axis], in.pointlist[3 * p + axis]);
+      high[axis] = std::max(high[axis], in.pointlist[3 * p + axis]);
+    }
+  }
+  const double shortestAllowed = 1e-8 * std::sqrt(squaredDistance(low, high));
   for (int t = 0; t < out.numberoftetrahedra; ++t)
   {
     const int* c = out.tetrahedronlist + 4 * t;
@@ -199,6 +212,16 @@ std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) con
           out.pointlist + 3 * c[3]) > 0))
     {
       return "TetGen returned an invalid or inverted tetrahedron";
+    }
+    double shortest = HUGE_VAL;
+    for (const auto& edge : TetEdgeCorners)
+    {
+      shortest = std::min(
+        shortest, squaredDistance(out.pointlist + 3 * c[edge[0]], out.pointlist + 3 * c[edge[1]]));
+    }
+    if (std::sqrt(shortest) < shortestAllowed)
+    {
+      return "TetGen returned a tetrahedron with an edge of rounding-noise length";
     }
   }
   if (hullAndInterfaceFaces(out) != this->KeptFaces)

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <set>
@@ -89,6 +90,16 @@ void checkConserved(const TetMesh& input, const AdaptationResult& result)
   {
     CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
   }
+  // No edge of rounding-noise length (TetGen can leave such point clusters; they are refused).
+  double shortest = HUGE_VAL;
+  for (const Tet& tet : result.mesh.tets)
+  {
+    for (const auto& edge : TetEdgeCorners)
+    {
+      shortest = std::min(shortest, squaredEdgeLength(result.mesh, tet[edge[0]], tet[edge[1]]));
+    }
+  }
+  CHECK(std::sqrt(shortest) > 1e-6);
   // Point data stays linear: provenance reproduces a linear field at TetGen's points too.
   for (PointId p = 0; p < result.mesh.numberOfPoints(); ++p)
   {
