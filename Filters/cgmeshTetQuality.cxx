@@ -1,6 +1,7 @@
 #include "cgmeshTetQuality.h"
 
 #include "ParallelFor.h"
+#include "TetQuality.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -51,7 +52,12 @@ double addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
           tetra->GetPoints()->SetPoint(corner, coordinates);
         }
         edgeRatio->SetValue(cellId, vtkMeshQuality::TetEdgeRatio(tetra));
-        minDihedralAngle->SetValue(cellId, vtkMeshQuality::TetMinAngle(tetra));
+        double p[4][3];
+        for (int corner = 0; corner < 4; ++corner)
+        {
+          tetra->GetPoints()->GetPoint(corner, p[corner]);
+        }
+        minDihedralAngle->SetValue(cellId, minimumDihedralAngle(p[0], p[1], p[2], p[3]));
       }
     });
   grid->GetCellData()->AddArray(edgeRatio);

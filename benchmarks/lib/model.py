@@ -1,0 +1,75 @@
+"""Simulated many-core run time of one refinement from its measured partition tasks.
+
+The colour loop refines, per iteration and per colour, all partitions of that colour
+concurrently, with a barrier after each colour. Given the measured seconds of every partition's
+refinement task (stats `partitionTaskSeconds`, entry iteration * partitions + partition) and the
+colour of every partition (`colorOfPartition`), the expected run time on T threads is
+
+    serial + sum over iterations and colours of makespan(tasks of that colour, T) + rest / T
+
+where makespan is greedy list scheduling with the longest task first (LPT) on T threads,
+`serial` is the phases that run on one thread (partition, graph, color, post, merge) counted
+once, and `rest` is the remainder of the measured total (heal, improve, quality and whatever
+of adapt lies outside the tasks) taken as perfectly parallel. With T = 1 the model gives back
+the measured total exactly.
+"""
+import heapq
+
+SERIAL_PHASES = ("partition", "graph", "color", "post", "merge")
+
+
+def lpt_makespan(tasks, threads):
+    """Makespan of greedy list scheduling, longest task first, on `threads` identical threads."""
+    if not tasks:
+        return 0.0
+    if threads <= 1:
+        return float(sum(tasks))
+    loads = [0.0] * min(threads, len(tasks))
+    heapq.heapify(loads)
+    for seconds in sorted(tasks, reverse=True):
+        heapq.heappush(loads, heapq.heappop(loads) + seconds)
+    return max(loads)
+
+
+def colour_groups(task_seconds, colour_of_partition, partitions):
+    """Lists of task seconds per (iteration, colour), in loop order."""
+    iterations = len(task_seconds) // partitions
+    colours = max(colour_of_partition) + 1
+    groups = []
+    for iteration in range(iterations):
+        per_colour = [[] for _ in range(colours)]
+        for partition in range(partitions):
+            per_colour[colour_of_partition[partition]].append(
+                task_seconds[iteration * partitions + partition])
+        groups.extend(per_colour)
+    return groups
+
+
+def simulate(stats, thread_counts):
+    """Model of one run (its stats JSON, normally the 1-thread run): a dict with the serial,
+    task and rest seconds and, per thread count, the modelled seconds and speedup over the
+    measured total. None when the stats lack the per-partition task times."""
+    tasks = stats.get("partitionTaskSeconds")
+    colours = stats.get("colorOfPartition")
+    if not tasks or not colours:
+        return None
+    seconds = stats["seconds"]
+    partitions = len(colours)
+    groups = colour_groups(tasks, colours, partitions)
+    serial = sum(seconds.get(phase, 0.0) for phase in SERIAL_PHASES)
+    task_total = float(sum(tasks))
+    rest = max(0.0, seconds["total"] - serial - task_total)
+    measured_threads = stats.get("threads", 1)
+    model = {"measuredThreads": measured_threads, "measuredTotal": seconds["total"],
+             "serialSeconds": serial, "taskSeconds": task_total, "restSeconds": rest,
+             "longestTask": max(tasks), "steps": len(groups), "threads": {}}
+    for threads in thread_counts:
+        # Tasks measured at more than one thread are taken as they are (a 1-thread run is the
+        # normal input; its tasks run without contention).
+        makespan = sum(lpt_makespan(group, threads) for group in groups)
+        total = serial + makespan + rest * measured_threads / threads
+        model["threads"][str(threads)] = {
+            "seconds": total, "colourLoopSeconds": makespan,
+            "speedup": seconds["total"] / total if measured_threads == 1 else None,
+            "loopEfficiency": task_total / (threads * makespan) if makespan > 0 else None}
+    return model
