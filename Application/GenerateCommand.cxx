@@ -51,9 +51,7 @@ int runGenerateCommand(const std::vector<std::string>& commandArguments)
   {
     return early;
   }
-  Status status = Status::success();
-
-  status = checkOutputFileName(arguments.outputFile);
+  Status status = checkOutputFileName(arguments.outputFile);
   if (!status.ok())
     return reportError(status.message());
   TetMesh mesh;

@@ -205,8 +205,7 @@ int runTetGenCommand(const std::vector<std::string>& commandArguments)
   {
     return early;
   }
-  Status status = Status::success();
-  status = checkOutputFileName(arguments.outputFile);
+  Status status = checkOutputFileName(arguments.outputFile);
   if (!status.ok())
     return reportError(status.message());
 

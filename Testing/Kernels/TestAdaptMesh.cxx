@@ -3,9 +3,9 @@
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
 #include "MeshValidation.h"
+#include "ResultComparison.h"
 #include "TestHarness.h"
 
-#include <cstring>
 
 using namespace cgmesh;
 
@@ -44,17 +44,6 @@ AdaptationResult refine(const TetMesh& input, int partitions, int threads, int i
     std::cerr << status.message() << "\n";
   }
   return result;
-}
-
-bool identical(const AdaptationResult& a, const AdaptationResult& b)
-{
-  return a.mesh.coordinates.size() == b.mesh.coordinates.size() &&
-    std::memcmp(a.mesh.coordinates.data(), b.mesh.coordinates.data(),
-      a.mesh.coordinates.size() * sizeof(double)) == 0 &&
-    a.mesh.tets == b.mesh.tets && a.mesh.regions == b.mesh.regions &&
-    a.parentCell == b.parentCell && a.colorOfCell == b.colorOfCell &&
-    a.partitionOfCell == b.partitionOfCell && a.provenance.sources == b.provenance.sources &&
-    a.provenance.weights == b.provenance.weights;
 }
 
 void checkRefinedCube(const TetMesh& input, const AdaptationResult& result, int iterations)
@@ -100,7 +89,7 @@ void test_cube_refinement_at_partition_counts()
     CHECK(serial.numberOfColors >= (partitions > 1 ? 2 : 1));
     for (int threads : { 2, 3 })
     {
-      CHECK(identical(serial, refine(input, partitions, threads, 2)));
+      CHECK(cgmesh_test::identicalResults(serial, refine(input, partitions, threads, 2)));
     }
   }
 }
@@ -114,7 +103,7 @@ void test_every_coloring_gives_identical_output_across_threads()
     options.coloring = coloring;
     const AdaptationResult serial = refine(input, 64, 1, 1, options);
     checkRefinedCube(input, serial, 1);
-    CHECK(identical(serial, refine(input, 64, 2, 1, options)));
+    CHECK(cgmesh_test::identicalResults(serial, refine(input, 64, 2, 1, options)));
     CHECK_EQUAL(serial.partitionsPerColor.size(), static_cast<std::size_t>(serial.numberOfColors));
     std::int64_t cells = 0;
     for (std::int64_t count : serial.cellsPerColor)
@@ -147,7 +136,7 @@ void test_partition_by_region()
     {
       CHECK_EQUAL(regionOfPartition[result.partitionOfCell[t]], result.mesh.regions[t]);
     }
-    CHECK(identical(result, refine(input, 0, 1, 1, options)));
+    CHECK(cgmesh_test::identicalResults(result, refine(input, 0, 1, 1, options)));
   }
   TetMesh noRegions;
   CHECK(generateKuhnCube(2, noRegions).ok());

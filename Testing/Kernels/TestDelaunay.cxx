@@ -5,12 +5,12 @@
 #include "CubeGenerator.h"
 #include "Geometry.h"
 #include "MeshValidation.h"
+#include "ResultComparison.h"
 #include "TestHarness.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <set>
 
@@ -60,16 +60,6 @@ AdaptationResult run(const TetMesh& input, const AdaptationOptions& options)
     std::cerr << status.message() << "\n";
   }
   return result;
-}
-
-bool identical(const AdaptationResult& a, const AdaptationResult& b)
-{
-  return a.mesh.coordinates.size() == b.mesh.coordinates.size() &&
-    std::memcmp(a.mesh.coordinates.data(), b.mesh.coordinates.data(),
-      a.mesh.coordinates.size() * sizeof(double)) == 0 &&
-    a.mesh.tets == b.mesh.tets && a.mesh.regions == b.mesh.regions &&
-    a.parentCell == b.parentCell && a.provenance.sources == b.provenance.sources &&
-    a.provenance.weights == b.provenance.weights;
 }
 
 void checkConserved(const TetMesh& input, const AdaptationResult& result)
@@ -125,7 +115,7 @@ void test_conforming_and_identical_across_threads()
     CHECK_EQUAL(serial.delaunayFallbacks, 0);
     const AdaptationResult parallel = run(input, delaunayOptions(3, iterations));
     CHECK(parallel.concurrentTetGen);
-    CHECK(identical(serial, parallel));
+    CHECK(cgmesh_test::identicalResults(serial, parallel));
   }
 }
 
@@ -145,7 +135,7 @@ void test_concurrent_tetgen_matches_serialised_calls()
     concurrent.numberOfThreads = 2 + 2 * repeat;
     const AdaptationResult result = run(input, concurrent);
     CHECK(result.concurrentTetGen);
-    CHECK(identical(reference, result));
+    CHECK(cgmesh_test::identicalResults(reference, result));
   }
 }
 
@@ -266,7 +256,7 @@ void test_failed_partitions_fall_back_to_templates()
   }
   CHECK_EQUAL(namingWarnings, 4);
   options.numberOfThreads = 1;
-  CHECK(identical(result, run(input, options)));
+  CHECK(cgmesh_test::identicalResults(result, run(input, options)));
 }
 
 void test_bad_delaunay_options_are_refused()

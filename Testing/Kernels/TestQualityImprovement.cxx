@@ -5,12 +5,12 @@
 #include "FinFetGenerator.h"
 #include "MeshValidation.h"
 #include "QualityImprover.h"
+#include "ResultComparison.h"
 #include "TestHarness.h"
 #include "TetQuality.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 using namespace cgmesh;
 
@@ -132,15 +132,6 @@ void test_edge_removal_three_to_two()
   CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
 }
 
-bool identical(const AdaptationResult& a, const AdaptationResult& b)
-{
-  return a.mesh.coordinates.size() == b.mesh.coordinates.size() &&
-    std::memcmp(a.mesh.coordinates.data(), b.mesh.coordinates.data(),
-      a.mesh.coordinates.size() * sizeof(double)) == 0 &&
-    a.mesh.tets == b.mesh.tets && a.mesh.regions == b.mesh.regions &&
-    a.parentCell == b.parentCell && a.provenance.weights == b.provenance.weights;
-}
-
 void test_device_refinement_with_improvement()
 {
   TetMesh input;
@@ -199,7 +190,7 @@ void test_device_refinement_with_improvement()
   options.numberOfThreads = 2;
   AdaptationResult parallel;
   CHECK(adaptMesh(input, options, parallel).ok());
-  CHECK(identical(improved, parallel));
+  CHECK(cgmesh_test::identicalResults(improved, parallel));
 }
 
 } // namespace
