@@ -3,7 +3,7 @@
 
 #include "CommandLine.h"
 #include "MeshFiles.h"
-#include "MeshValidation.h"
+#include "Validation/MeshValidation.h"
 #include "cgmeshVTKConversion.h"
 
 #include "vtkNew.h"

@@ -3,7 +3,7 @@
 #ifndef cgmesh_CommandLine_h
 #define cgmesh_CommandLine_h
 
-#include "Status.h"
+#include "Core/Status.h"
 
 #include <string>
 #include <vector>

@@ -3,7 +3,7 @@
 #define cgmesh_Commands_h
 
 #include "CommandLine.h"
-#include "Status.h"
+#include "Core/Status.h"
 
 #include <string>
 #include <vector>

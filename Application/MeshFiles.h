@@ -2,7 +2,7 @@
 #ifndef cgmesh_MeshFiles_h
 #define cgmesh_MeshFiles_h
 
-#include "Status.h"
+#include "Core/Status.h"
 
 #include <string>
 

@@ -2,7 +2,7 @@
 #ifndef cgmesh_RefineReport_h
 #define cgmesh_RefineReport_h
 
-#include "Status.h"
+#include "Core/Status.h"
 
 #include <cstdint>
 #include <ostream>

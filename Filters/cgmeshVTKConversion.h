@@ -6,8 +6,8 @@
 #include "cgmeshFiltersModule.h" // for export macro
 #include "vtkType.h"             // for vtkIdType
 
-#include "Kernels/Status.h"
-#include "Kernels/TetMesh.h"
+#include "Core/Status.h"
+#include "Core/TetMesh.h"
 
 #include <string>
 

@@ -1,13 +1,13 @@
 #include "AdaptationDriver.h"
 
 #include "ColorLoop.h"
-#include "ColoringSupport.h"
-#include "Geometry.h"
+#include "Coloring/ColoringSupport.h"
+#include "Core/Geometry.h"
 #include "ImprovementSweep.h"
-#include "InputPreparation.h"
-#include "MeshPartitioner.h"
+#include "Validation/InputPreparation.h"
+#include "Partitioning/MeshPartitioner.h"
 #include "ParallelFor.h"
-#include "PartitionColoring.h"
+#include "Coloring/PartitionColoring.h"
 #include "TetGenWorkers.h"
 
 #include <memory>

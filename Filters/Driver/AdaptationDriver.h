@@ -3,9 +3,9 @@
 #ifndef cgmesh_AdaptationDriver_h
 #define cgmesh_AdaptationDriver_h
 
-#include "MeshMerge.h"
-#include "Status.h"
-#include "TetMesh.h"
+#include "Merge/MeshMerge.h"
+#include "Core/Status.h"
+#include "Core/TetMesh.h"
 
 #include <cstdint>
 #include <functional>

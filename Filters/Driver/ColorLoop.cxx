@@ -1,8 +1,8 @@
 #include "ColorLoop.h"
 
-#include "Geometry.h"
+#include "Core/Geometry.h"
 #include "ParallelFor.h"
-#include "PartitionColoring.h"
+#include "Coloring/PartitionColoring.h"
 
 #include <algorithm>
 #include <chrono>

@@ -5,11 +5,11 @@
 #define cgmesh_ColorLoop_h
 
 #include "AdaptationDriver.h"
-#include "PartitionGraph.h"
-#include "PartitionRefiner.h"
-#include "QualityImprover.h"
-#include "TemplateTable.h"
-#include "TetGenRefiner.h"
+#include "Partitioning/PartitionGraph.h"
+#include "Refinement/PartitionRefiner.h"
+#include "Improvement/QualityImprover.h"
+#include "Refinement/TemplateTable.h"
+#include "Refinement/TetGenRefiner.h"
 
 #include <vector>
 

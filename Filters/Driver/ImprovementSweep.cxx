@@ -1,7 +1,7 @@
 #include "ImprovementSweep.h"
 
 #include "ParallelFor.h"
-#include "PartitionColoring.h"
+#include "Coloring/PartitionColoring.h"
 
 #include <algorithm>
 #include <chrono>

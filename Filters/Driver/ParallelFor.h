@@ -2,7 +2,7 @@
 #ifndef cgmesh_ParallelFor_h
 #define cgmesh_ParallelFor_h
 
-#include "Status.h"
+#include "Core/Status.h"
 
 #include <cstdint>
 #include <functional>

@@ -1,7 +1,7 @@
 #include "FilterTestSupport.h"
 
 #include "CubeGenerator.h"
-#include "MeshValidation.h"
+#include "Validation/MeshValidation.h"
 #include "cgmeshVTKConversion.h"
 #include "vtkCoarseGrainedMeshAdaptation.h"
 

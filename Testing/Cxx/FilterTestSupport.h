@@ -2,7 +2,7 @@
 #ifndef cgmesh_FilterTestSupport_h
 #define cgmesh_FilterTestSupport_h
 
-#include "MeshValidation.h"
+#include "Validation/MeshValidation.h"
 #include "vtkCoarseGrainedMeshAdaptation.h"
 #include "vtkSmartPointer.h"
 

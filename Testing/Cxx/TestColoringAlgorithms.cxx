@@ -3,7 +3,7 @@
 // colouring's name in the field data, and Greedy-LU and Recoloring better balanced than Greedy.
 #include "FilterTestSupport.h"
 
-#include "PartitionColoring.h"
+#include "Coloring/PartitionColoring.h"
 
 #include "vtkFieldData.h"
 #include "vtkStringArray.h"

@@ -7,7 +7,7 @@
 //   TestFilterQualityImprovement FINFET.vtu
 #include "FilterTestSupport.h"
 
-#include "TetQuality.h"
+#include "Core/TetQuality.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"

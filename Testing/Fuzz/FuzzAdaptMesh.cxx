@@ -4,7 +4,7 @@
 // boundary area, region volumes and material-interface area, and leave its input untouched.
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
-#include "MeshValidation.h"
+#include "Validation/MeshValidation.h"
 #include "TetGenWorkers.h"
 
 #define TETLIBRARY

@@ -2,7 +2,7 @@
 // provenance and bit-identical output for any thread count.
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
-#include "MeshValidation.h"
+#include "Validation/MeshValidation.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
 

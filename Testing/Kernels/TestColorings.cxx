@@ -1,11 +1,11 @@
 // Every colouring is proper on random, complete, edgeless and real partition graphs; the parallel
 // ones give the same colours for any thread count and schedule; the balanced ones are better
 // balanced than first-fit greedy.
-#include "ColoringSupport.h"
+#include "Coloring/ColoringSupport.h"
 #include "CubeGenerator.h"
-#include "MeshPartitioner.h"
+#include "Partitioning/MeshPartitioner.h"
 #include "ParallelFor.h"
-#include "PartitionColoring.h"
+#include "Coloring/PartitionColoring.h"
 #include "TestHarness.h"
 
 #include <algorithm>

@@ -3,8 +3,8 @@
 // partitions, and the template fallback when TetGen fails.
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
-#include "Geometry.h"
-#include "MeshValidation.h"
+#include "Core/Geometry.h"
+#include "Validation/MeshValidation.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
 

@@ -1,7 +1,7 @@
 // The benchmark meshes: cube sizes, and the FinFET's materials in both generators.
 #include "CubeGenerator.h"
 #include "FinFetGenerator.h"
-#include "MeshValidation.h"
+#include "Validation/MeshValidation.h"
 #include "TestHarness.h"
 
 #include <cmath>

@@ -1,9 +1,9 @@
 // Interfaces between partitions: the ownership rule (the first processed partition splits a
 // shared edge, later ones heal it) and outbox healing, driven colour by colour by hand.
-#include "EdgeSplits.h"
-#include "MeshMerge.h"
-#include "MeshValidation.h"
-#include "PartitionRefiner.h"
+#include "Core/EdgeSplits.h"
+#include "Merge/MeshMerge.h"
+#include "Validation/MeshValidation.h"
+#include "Refinement/PartitionRefiner.h"
 #include "TestHarness.h"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 // and the input is never modified.
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
-#include "MeshValidation.h"
+#include "Validation/MeshValidation.h"
 #include "TestHarness.h"
 
 #include <cmath>

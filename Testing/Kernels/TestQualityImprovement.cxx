@@ -3,11 +3,11 @@
 // identical output across thread counts.
 #include "AdaptationDriver.h"
 #include "FinFetGenerator.h"
-#include "MeshValidation.h"
-#include "QualityImprover.h"
+#include "Validation/MeshValidation.h"
+#include "Improvement/QualityImprover.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
-#include "TetQuality.h"
+#include "Core/TetQuality.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 // Template refinement of a single tet: every split pattern tiles its parent with positive tets,
 // and two tets sharing a face always triangulate it identically.
-#include "Geometry.h"
-#include "MeshValidation.h"
-#include "TemplateTable.h"
+#include "Core/Geometry.h"
+#include "Validation/MeshValidation.h"
+#include "Refinement/TemplateTable.h"
 #include "TestHarness.h"
 
 #include <algorithm>

@@ -1,0 +1,92 @@
+// Edge keys, outboxes and the maps that tell a partition which of its edges already have a
+// midpoint: the data that crosses partition interfaces.
+#ifndef cgmesh_EdgeSplits_h
+#define cgmesh_EdgeSplits_h
+
+#include "Core/TetMesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+namespace cgmesh
+{
+
+// An undirected edge between two global point ids, stored with the smaller id first.
+struct EdgeKey
+{
+  PointId low;
+  PointId high;
+
+  static EdgeKey of(PointId a, PointId b) { return a < b ? EdgeKey{ a, b } : EdgeKey{ b, a }; }
+  bool operator==(const EdgeKey& other) const { return low == other.low && high == other.high; }
+};
+
+struct EdgeKeyHash
+{
+  std::size_t operator()(const EdgeKey& key) const
+  {
+    // splitmix64-style mixing: point ids are dense, so a plain xor would collide heavily.
+    std::uint64_t x = static_cast<std::uint64_t>(key.low) * 0x9E3779B97F4A7C15ull ^
+      static_cast<std::uint64_t>(key.high);
+    x ^= x >> 31;
+    x *= 0xBF58476D1CE4E5B9ull;
+    x ^= x >> 29;
+    return static_cast<std::size_t>(x);
+  }
+};
+
+// Where a new vertex lies: a weighted sum of up to four existing vertices (unused slots have
+// weight 0). An edge midpoint has two halves; a Delaunay Steiner point the barycentric
+// coordinates of the tet it was inserted in. Point data is interpolated with these weights.
+struct PointSource
+{
+  std::array<PointId, 4> points;
+  std::array<double, 4> weights;
+
+  static PointSource midpoint(const EdgeKey& edge)
+  {
+    return { { edge.low, edge.high, -1, -1 }, { 0.5, 0.5, 0, 0 } };
+  }
+};
+
+// Midpoint vertex of each split edge.
+using EdgeMidpointMap = std::unordered_map<EdgeKey, PointId, EdgeKeyHash>;
+
+// One split of an edge that may be shared with partitions processed later in the same iteration:
+// the edge's two global end points and the global id of the vertex inserted on it.
+struct OutboxEntry
+{
+  EdgeKey edge;
+  PointId vertex;
+};
+
+using Outbox = std::vector<OutboxEntry>;
+
+// Healing input: every split that the given (already processed) neighbours posted. Entries for
+// edges this partition does not hold are harmless: they are only ever looked up by edge.
+inline void collectReceivedSplits(
+  const std::vector<const Outbox*>& neighbourOutboxes, EdgeMidpointMap& received)
+{
+  received.clear();
+  std::size_t total = 0;
+  for (const Outbox* outbox : neighbourOutboxes)
+  {
+    total += outbox->size();
+  }
+  received.reserve(total);
+  for (const Outbox* outbox : neighbourOutboxes)
+  {
+    for (const OutboxEntry& entry : *outbox)
+    {
+      received.emplace(entry.edge, entry.vertex);
+    }
+  }
+}
+
+} // namespace cgmesh
+
+#endif

@@ -1,0 +1,47 @@
+// Finds the tet of a small mesh that contains a point, with its barycentric coordinates: used to
+// place Delaunay Steiner points (for point data) and to find a new tet's parent (for cell data).
+#ifndef cgmesh_TetLocator_h
+#define cgmesh_TetLocator_h
+
+#include "Core/TetMesh.h"
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace cgmesh
+{
+
+class TetLocator
+{
+public:
+  using CoordinatesOf = std::function<const double*(PointId)>;
+
+  TetLocator(const std::vector<Tet>& tets, CoordinatesOf coordinatesOf);
+
+  struct Location
+  {
+    std::size_t tet = 0;
+    std::array<double, 4> barycentric = { 0, 0, 0, 0 };
+  };
+
+  // The tet whose smallest barycentric coordinate for `point` is largest: the containing tet, or
+  // for a point a rounding error outside every tet, the nearest one in that sense.
+  Location locate(const double* point) const;
+
+private:
+  Location bestAmong(const double* point, const std::vector<std::size_t>& candidates) const;
+  std::array<double, 4> barycentric(std::size_t tet, const double* point) const;
+  bool mayContain(std::size_t tet, const double* point) const; // bounding-box test
+  std::size_t cellIndex(const double* point) const;
+
+  const std::vector<Tet>& Tets;
+  CoordinatesOf Coordinates;
+  double Low[3], CellSize[3];
+  int Resolution = 1;
+  std::vector<std::vector<std::size_t>> Buckets; // tets whose bounding box meets each grid cell
+};
+
+} // namespace cgmesh
+
+#endif

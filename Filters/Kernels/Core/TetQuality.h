@@ -1,0 +1,94 @@
+// Shape measures of a single tetrahedron.
+#ifndef cgmesh_TetQuality_h
+#define cgmesh_TetQuality_h
+
+#include "Core/Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cgmesh
+{
+
+// Mean ratio: 12 (3 V)^(2/3) / (sum of squared edge lengths). 1 for the regular tet, tending to 0
+// for degenerate ones, negative for inverted ones. Smooth and cheap, which suits optimisation;
+// it is the measure the quality improvement maximises (the worst tet of each local change).
+inline double meanRatio(const double* p0, const double* p1, const double* p2, const double* p3)
+{
+  const double volume = signedVolume6(p0, p1, p2, p3) / 6.0;
+  const double sumSquared = squaredDistance(p0, p1) + squaredDistance(p0, p2) +
+    squaredDistance(p0, p3) + squaredDistance(p1, p2) + squaredDistance(p1, p3) +
+    squaredDistance(p2, p3);
+  if (!(sumSquared > 0))
+  {
+    return -1;
+  }
+  if (volume <= 0)
+  {
+    return volume < 0 ? -1 : 0;
+  }
+  return 12.0 * std::cbrt(9.0 * volume * volume) / sumSquared;
+}
+
+// Ratio of the longest to the shortest edge (1 at best), as vtkMeshQuality's edge ratio.
+inline double edgeRatio(const double* p0, const double* p1, const double* p2, const double* p3)
+{
+  const double squared[6] = { squaredDistance(p0, p1), squaredDistance(p0, p2),
+    squaredDistance(p0, p3), squaredDistance(p1, p2), squaredDistance(p1, p3),
+    squaredDistance(p2, p3) };
+  const double longest = *std::max_element(squared, squared + 6);
+  const double shortest = *std::min_element(squared, squared + 6);
+  return shortest > 0 ? std::sqrt(longest / shortest) : HUGE_VAL;
+}
+
+// Smallest dihedral angle in degrees (70.53 for the regular tet).
+inline double minimumDihedralAngle(
+  const double* p0, const double* p1, const double* p2, const double* p3)
+{
+  const double* p[4] = { p0, p1, p2, p3 };
+  // Face normals (unnormalised) of the faces opposite each corner, pointing outward.
+  double normal[4][3];
+  for (int skip = 0; skip < 4; ++skip)
+  {
+    const double* a = p[(skip + 1) % 4];
+    const double* b = p[(skip + 2) % 4];
+    const double* c = p[(skip + 3) % 4];
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    double* n = normal[skip];
+    n[0] = u[1] * v[2] - u[2] * v[1];
+    n[1] = u[2] * v[0] - u[0] * v[2];
+    n[2] = u[0] * v[1] - u[1] * v[0];
+    const double* opposite = p[skip];
+    const double toOpposite =
+      n[0] * (opposite[0] - a[0]) + n[1] * (opposite[1] - a[1]) + n[2] * (opposite[2] - a[2]);
+    if (toOpposite > 0)
+    {
+      n[0] = -n[0];
+      n[1] = -n[1];
+      n[2] = -n[2];
+    }
+  }
+  double smallest = 180;
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = i + 1; j < 4; ++j)
+    {
+      const double dot =
+        normal[i][0] * normal[j][0] + normal[i][1] * normal[j][1] + normal[i][2] * normal[j][2];
+      const double lengths = std::sqrt(
+        (normal[i][0] * normal[i][0] + normal[i][1] * normal[i][1] + normal[i][2] * normal[i][2]) *
+        (normal[j][0] * normal[j][0] + normal[j][1] * normal[j][1] + normal[j][2] * normal[j][2]));
+      if (lengths > 0)
+      {
+        const double cosine = std::max(-1.0, std::min(1.0, -dot / lengths));
+        smallest = std::min(smallest, std::acos(cosine) * 180.0 / M_PI);
+      }
+    }
+  }
+  return smallest;
+}
+
+} // namespace cgmesh
+
+#endif

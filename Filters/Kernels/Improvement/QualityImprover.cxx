@@ -1,0 +1,664 @@
+#include "Improvement/QualityImprover.h"
+
+#include "Core/ConstrainedFaces.h"
+#include "Core/TetQuality.h"
+
+#include <algorithm>
+#include <limits>
+#include <new>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace cgmesh
+{
+namespace
+{
+
+using Corners = std::array<int, 4>; // local vertex numbers
+
+// A change must beat the worst tet it replaces by more than rounding.
+bool improves(double after, double before)
+{
+  return after > before + 1e-12;
+}
+
+class Improver
+{
+public:
+  Improver(PartitionMesh& partition, const PartitionPoints& points);
+
+  void run(const ImprovementParameters& parameters, ImprovementStatistics& statistics);
+  void writeBack(std::vector<PointId>& movedPoints);
+
+private:
+  const double* at(int v) const { return this->Points.at(this->IdOf[v]); }
+  double quality(const Corners& t) const
+  {
+    return meanRatio(this->at(t[0]), this->at(t[1]), this->at(t[2]), this->at(t[3]));
+  }
+  double orientation(int a, int b, int c, int d) const
+  {
+    return signedVolume6(this->at(a), this->at(b), this->at(c), this->at(d));
+  }
+  int localVertex(PointId id);
+  void addTet(const Corners& corners, int region, CellId parent);
+  void killTet(int t);
+  std::vector<int> aliveTetsWith(const std::vector<int>& vertices) const;
+  CellId parentOf(const Corners& corners, const std::vector<int>& replaced) const;
+
+  bool removeEdge(int a, int b);
+  bool withinVolumeBound(const std::vector<Corners>& created, double largestReplaced) const;
+  double largestVolume(const std::vector<int>& tets) const;
+  bool orderedRing(int a, int b, const std::vector<int>& around, std::vector<int>& ring) const;
+  double triangleQuality(int p, int q, int r, int a, int b, double side) const;
+  double bestRingTriangulation(
+    int a, int b, const std::vector<int>& ring, std::vector<std::vector<int>>& split) const;
+  std::vector<Corners> ringTets(
+    int a, int b, const std::vector<int>& ring, const std::vector<std::vector<int>>& split) const;
+  double totalVolume(const std::vector<Corners>& tets) const;
+  bool swapFace(int t, int skip);
+  bool smoothVertex(int v);
+
+  PartitionMesh& Partition;
+  const PartitionPoints& Points;
+  std::vector<PointId> IdOf;
+  std::unordered_map<PointId, int> LocalOf;
+  std::vector<Corners> Tets;
+  std::vector<int> Regions;
+  std::vector<CellId> Parents;
+  std::vector<double> Qualities; // mean ratio of each tet, kept current
+  std::vector<char> Alive;
+  std::vector<std::vector<int>> Incident; // tets (alive or not) at each vertex
+  std::vector<char> Fixed;
+  std::vector<char> Moved;
+  ImprovementParameters Parameters;
+};
+
+double Improver::totalVolume(const std::vector<Corners>& tets) const
+{
+  double total = 0;
+  for (const Corners& c : tets)
+  {
+    total += this->orientation(c[0], c[1], c[2], c[3]) / 6.0;
+  }
+  return total;
+}
+
+double Improver::largestVolume(const std::vector<int>& tets) const
+{
+  double largest = 0;
+  for (int t : tets)
+  {
+    const Corners& c = this->Tets[t];
+    largest = std::max(largest, this->orientation(c[0], c[1], c[2], c[3]) / 6.0);
+  }
+  return largest;
+}
+
+bool Improver::withinVolumeBound(const std::vector<Corners>& created, double largestReplaced) const
+{
+  if (!(this->Parameters.maximumVolume > 0))
+  {
+    return true;
+  }
+  const double allowed = std::max(this->Parameters.maximumVolume, largestReplaced);
+  for (const Corners& c : created)
+  {
+    if (this->orientation(c[0], c[1], c[2], c[3]) / 6.0 > allowed)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
+  : Partition(partition)
+  , Points(points)
+{
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    Corners corners;
+    for (int k = 0; k < 4; ++k)
+    {
+      corners[k] = this->localVertex(partition.tets[t][k]);
+    }
+    this->addTet(
+      corners, partition.regions.empty() ? 0 : partition.regions[t], partition.parentCells[t]);
+  }
+  this->Fixed.assign(this->IdOf.size(), 0);
+  this->Moved.assign(this->IdOf.size(), 0);
+  std::vector<Face> boundaryFaces, regionInterfaceFaces;
+  findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
+  for (const auto* faces : { &boundaryFaces, &regionInterfaceFaces })
+  {
+    for (const Face& face : *faces)
+    {
+      for (PointId p : face)
+      {
+        this->Fixed[this->LocalOf.at(p)] = 1;
+      }
+    }
+  }
+}
+
+int Improver::localVertex(PointId id)
+{
+  const auto inserted = this->LocalOf.emplace(id, static_cast<int>(this->IdOf.size()));
+  if (inserted.second)
+  {
+    this->IdOf.push_back(id);
+    this->Incident.emplace_back();
+  }
+  return inserted.first->second;
+}
+
+void Improver::addTet(const Corners& corners, int region, CellId parent)
+{
+  const int t = static_cast<int>(this->Tets.size());
+  this->Tets.push_back(corners);
+  this->Regions.push_back(region);
+  this->Parents.push_back(parent);
+  this->Qualities.push_back(this->quality(corners));
+  this->Alive.push_back(1);
+  for (int v : corners)
+  {
+    this->Incident[v].push_back(t);
+  }
+}
+
+void Improver::killTet(int t)
+{
+  this->Alive[t] = 0;
+  for (int v : this->Tets[t])
+  {
+    auto& list = this->Incident[v];
+    list.erase(std::remove(list.begin(), list.end(), t), list.end());
+  }
+}
+
+std::vector<int> Improver::aliveTetsWith(const std::vector<int>& vertices) const
+{
+  std::vector<int> found;
+  for (int t : this->Incident[vertices[0]])
+  {
+    const Corners& c = this->Tets[t];
+    bool all = true;
+    for (std::size_t i = 1; i < vertices.size() && all; ++i)
+    {
+      all = std::find(c.begin(), c.end(), vertices[i]) != c.end();
+    }
+    if (all && this->Alive[t])
+    {
+      found.push_back(t);
+    }
+  }
+  return found;
+}
+
+// The replaced tet that contains the new tet's centroid: its input cell is the new tet's parent.
+CellId Improver::parentOf(const Corners& corners, const std::vector<int>& replaced) const
+{
+  double centroid[3] = { 0, 0, 0 };
+  for (int v : corners)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      centroid[axis] += 0.25 * this->at(v)[axis];
+    }
+  }
+  int best = replaced.front();
+  double bestMinimum = -std::numeric_limits<double>::max();
+  for (int t : replaced)
+  {
+    const Corners& c = this->Tets[t];
+    const double volume = this->orientation(c[0], c[1], c[2], c[3]);
+    double minimum = std::numeric_limits<double>::max();
+    for (int i = 0; i < 4; ++i)
+    {
+      const double* p[4] = { this->at(c[0]), this->at(c[1]), this->at(c[2]), this->at(c[3]) };
+      p[i] = centroid;
+      minimum = std::min(minimum, signedVolume6(p[0], p[1], p[2], p[3]) / volume);
+    }
+    if (minimum > bestMinimum)
+    {
+      bestMinimum = minimum;
+      best = t;
+    }
+  }
+  return this->Parents[best];
+}
+
+// Orders the link of edge (a, b) into a cycle; false when the edge is on a boundary.
+bool Improver::orderedRing(
+  int a, int b, const std::vector<int>& around, std::vector<int>& ring) const
+{
+  std::unordered_map<int, std::vector<int>> partners;
+  for (int t : around)
+  {
+    int other[2], n = 0;
+    for (int v : this->Tets[t])
+    {
+      if (v != a && v != b)
+      {
+        other[n++] = v;
+      }
+    }
+    partners[other[0]].push_back(other[1]);
+    partners[other[1]].push_back(other[0]);
+  }
+  for (const auto& entry : partners)
+  {
+    if (entry.second.size() != 2)
+    {
+      return false;
+    }
+  }
+  ring.clear();
+  int previous = -1;
+  int current = partners.begin()->first;
+  for (const auto& entry : partners)
+  {
+    current = std::min(current, entry.first); // a deterministic start
+  }
+  while (ring.size() < around.size())
+  {
+    ring.push_back(current);
+    const auto& next = partners.at(current);
+    const int step = next[0] != previous ? next[0] : next[1];
+    previous = current;
+    current = step;
+    if (current == ring.front())
+    {
+      break;
+    }
+  }
+  return ring.size() == around.size() && current == ring.front();
+}
+
+// Worst mean ratio of the two tets that triangle (p, q, r) of a removed edge's ring makes with
+// its end points a and b, or -1 when they cannot both be positive.
+double Improver::triangleQuality(int p, int q, int r, int a, int b, double side) const
+{
+  const double sideA = this->orientation(p, q, r, a);
+  const double sideB = this->orientation(p, q, r, b);
+  if (!(sideA * side > 0 && sideB * side < 0))
+  {
+    return -1; // a would not lie on the same side of every new triangle: the result would fold
+  }
+  const Corners first = sideA > 0 ? Corners{ p, q, r, a } : Corners{ p, r, q, a };
+  const Corners second = sideB > 0 ? Corners{ p, q, r, b } : Corners{ p, r, q, b };
+  return std::min(this->quality(first), this->quality(second));
+}
+
+// Best triangulation of the ring polygon around edge (a, b): the one whose worst tet is best
+// (dynamic programming over sub-chains ring[i..j]); returns that worst mean ratio. Triangles
+// taken in ring order all see a on one side: the side of the fan from ring[0] as a whole.
+double Improver::bestRingTriangulation(
+  int a, int b, const std::vector<int>& ring, std::vector<std::vector<int>>& split) const
+{
+  const int n = static_cast<int>(ring.size());
+  double side = 0;
+  for (int i = 1; i + 1 < n; ++i)
+  {
+    side += this->orientation(ring[0], ring[i], ring[i + 1], a);
+  }
+  std::vector<std::vector<double>> best(n, std::vector<double>(n, 0));
+  split.assign(n, std::vector<int>(n, -1));
+  for (int length = 2; length < n; ++length)
+  {
+    for (int i = 0; i + length < n; ++i)
+    {
+      const int j = i + length;
+      best[i][j] = -2;
+      for (int k = i + 1; k < j; ++k)
+      {
+        double value = this->triangleQuality(ring[i], ring[k], ring[j], a, b, side);
+        value = std::min(value, k - i >= 2 ? best[i][k] : 1e300);
+        value = std::min(value, j - k >= 2 ? best[k][j] : 1e300);
+        if (value > best[i][j])
+        {
+          best[i][j] = value;
+          split[i][j] = k;
+        }
+      }
+    }
+  }
+  return best[0][n - 1];
+}
+
+// The tets of the chosen triangulation: each triangle joined to both ends of the removed edge.
+std::vector<Corners> Improver::ringTets(
+  int a, int b, const std::vector<int>& ring, const std::vector<std::vector<int>>& split) const
+{
+  std::vector<Corners> created;
+  const int n = static_cast<int>(ring.size());
+  std::vector<std::pair<int, int>> pending = { { 0, n - 1 } };
+  while (!pending.empty())
+  {
+    const auto chain = pending.back();
+    pending.pop_back();
+    const int k = split[chain.first][chain.second];
+    const int p = ring[chain.first], q = ring[k], r = ring[chain.second];
+    const bool aPositive = this->orientation(p, q, r, a) > 0;
+    created.push_back(aPositive ? Corners{ p, q, r, a } : Corners{ p, r, q, a });
+    created.push_back(aPositive ? Corners{ p, r, q, b } : Corners{ p, q, r, b });
+    if (k - chain.first >= 2)
+    {
+      pending.emplace_back(chain.first, k);
+    }
+    if (chain.second - k >= 2)
+    {
+      pending.emplace_back(k, chain.second);
+    }
+  }
+  return created;
+}
+
+bool Improver::removeEdge(int a, int b)
+{
+  const std::vector<int> around = this->aliveTetsWith({ a, b });
+  if (around.size() < 3 || around.size() > 7)
+  {
+    return false;
+  }
+  const int region = this->Regions[around[0]];
+  double before = std::numeric_limits<double>::max();
+  for (int t : around)
+  {
+    if (this->Regions[t] != region)
+    {
+      return false; // the edge lies on a material interface
+    }
+    before = std::min(before, this->Qualities[t]);
+  }
+  if (before >= this->Parameters.targetQuality)
+  {
+    return false;
+  }
+  std::vector<int> ring;
+  if (!this->orderedRing(a, b, around, ring))
+  {
+    return false;
+  }
+  std::vector<std::vector<int>> split;
+  const double best = this->bestRingTriangulation(a, b, ring, split);
+  if (!(best > 0) || !improves(best, before))
+  {
+    return false;
+  }
+  const std::vector<Corners> created = this->ringTets(a, b, ring, split);
+  std::vector<Corners> replaced;
+  for (int t : around)
+  {
+    replaced.push_back(this->Tets[t]);
+  }
+  const double volumeBefore = this->totalVolume(replaced);
+  if (std::abs(this->totalVolume(created) - volumeBefore) > 1e-10 * volumeBefore ||
+    !this->withinVolumeBound(created, this->largestVolume(around)))
+  {
+    return false; // guards against a folded re-triangulation
+  }
+  std::vector<CellId> parents;
+  for (const Corners& corners : created)
+  {
+    parents.push_back(this->parentOf(corners, around));
+  }
+  for (int t : around)
+  {
+    this->killTet(t);
+  }
+  for (std::size_t i = 0; i < created.size(); ++i)
+  {
+    this->addTet(created[i], region, parents[i]);
+  }
+  return true;
+}
+
+// 2->3: replaces tet t and its neighbour across the face opposite corner `skip` by three tets
+// around the edge joining the two opposite corners.
+bool Improver::swapFace(int t, int skip)
+{
+  const Corners first = this->Tets[t];
+  if (this->Qualities[t] >= this->Parameters.targetQuality)
+  {
+    return false; // bad tets drive the swaps
+  }
+  std::vector<int> face;
+  for (int i = 0; i < 4; ++i)
+  {
+    if (i != skip)
+    {
+      face.push_back(first[i]);
+    }
+  }
+  int neighbour = -1;
+  for (int u : this->aliveTetsWith(face))
+  {
+    neighbour = u != t ? u : neighbour;
+  }
+  if (neighbour < 0 || this->Regions[neighbour] != this->Regions[t])
+  {
+    return false; // a boundary face or a material interface
+  }
+  const int a = first[skip];
+  int b = -1;
+  for (int v : this->Tets[neighbour])
+  {
+    b = std::find(face.begin(), face.end(), v) == face.end() ? v : b;
+  }
+  const double before = std::min(this->Qualities[t], this->Qualities[neighbour]);
+  // Valid only when segment ab crosses the face's interior: then the three tets around it have
+  // the same orientation when the face is walked in one direction.
+  std::vector<Corners> created;
+  double after = std::numeric_limits<double>::max();
+  double firstSide = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const int x = face[i], y = face[(i + 1) % 3];
+    const double side = this->orientation(x, y, a, b);
+    if (side == 0 || (i > 0 && (side > 0) != (firstSide > 0)))
+    {
+      return false;
+    }
+    firstSide = i == 0 ? side : firstSide;
+    created.push_back(side > 0 ? Corners{ x, y, a, b } : Corners{ y, x, a, b });
+    after = std::min(after, this->quality(created.back()));
+  }
+  if (!(after > 0) || !improves(after, before))
+  {
+    return false;
+  }
+  const std::vector<int> replaced = { t, neighbour };
+  if (!this->withinVolumeBound(created, this->largestVolume(replaced)))
+  {
+    return false;
+  }
+  std::vector<CellId> parents;
+  for (const Corners& corners : created)
+  {
+    parents.push_back(this->parentOf(corners, replaced));
+  }
+  const int region = this->Regions[t];
+  this->killTet(t);
+  this->killTet(neighbour);
+  for (std::size_t i = 0; i < created.size(); ++i)
+  {
+    this->addTet(created[i], region, parents[i]);
+  }
+  return true;
+}
+
+// Moves a free vertex towards the centre of its neighbours (then half way) when that raises the
+// worst tet around it; otherwise leaves it.
+bool Improver::smoothVertex(int v)
+{
+  const std::vector<int> star = this->Incident[v];
+  if (star.empty())
+  {
+    return false;
+  }
+  double centre[3] = { 0, 0, 0 };
+  int neighbours = 0;
+  std::vector<int> seen;
+  double before = std::numeric_limits<double>::max();
+  for (int t : star)
+  {
+    before = std::min(before, this->Qualities[t]);
+    for (int w : this->Tets[t])
+    {
+      if (w != v && std::find(seen.begin(), seen.end(), w) == seen.end())
+      {
+        seen.push_back(w);
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          centre[axis] += this->at(w)[axis];
+        }
+        ++neighbours;
+      }
+    }
+  }
+  if (before >= this->Parameters.targetQuality)
+  {
+    return false;
+  }
+  const double largestBefore = this->largestVolume(star);
+  double* position = this->Points.at(this->IdOf[v]);
+  const double original[3] = { position[0], position[1], position[2] };
+  for (double step : { 1.0, 0.5 })
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      position[axis] = original[axis] + step * (centre[axis] / neighbours - original[axis]);
+    }
+    double after = std::numeric_limits<double>::max();
+    for (int t : star)
+    {
+      after = std::min(after, this->quality(this->Tets[t]));
+    }
+    std::vector<Corners> moved;
+    for (int t : star)
+    {
+      moved.push_back(this->Tets[t]);
+    }
+    if (after > 0 && improves(after, before) && this->withinVolumeBound(moved, largestBefore))
+    {
+      for (int t : star)
+      {
+        this->Qualities[t] = this->quality(this->Tets[t]);
+      }
+      this->Moved[v] = 1;
+      return true;
+    }
+  }
+  std::copy(original, original + 3, position);
+  return false;
+}
+
+void Improver::run(const ImprovementParameters& parameters, ImprovementStatistics& statistics)
+{
+  this->Parameters = parameters;
+  for (int pass = 0; pass < parameters.passes; ++pass)
+  {
+    const int tetsAtStart = static_cast<int>(this->Tets.size());
+    std::unordered_set<std::uint64_t> triedEdges;
+    for (int t = 0; t < tetsAtStart; ++t)
+    {
+      if (!this->Alive[t] || this->Qualities[t] >= parameters.targetQuality)
+      {
+        continue;
+      }
+      for (int e = 0; e < 6 && this->Alive[t]; ++e)
+      {
+        const int a = this->Tets[t][TetEdgeCorners[e][0]];
+        const int b = this->Tets[t][TetEdgeCorners[e][1]];
+        const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+          static_cast<std::uint32_t>(std::max(a, b));
+        if (triedEdges.insert(key).second)
+        {
+          statistics.edgeRemovals += this->removeEdge(a, b);
+        }
+      }
+    }
+    const int tetsNow = static_cast<int>(this->Tets.size());
+    for (int t = 0; t < tetsNow; ++t)
+    {
+      for (int skip = 0; skip < 4 && this->Alive[t]; ++skip)
+      {
+        statistics.faceSwaps += this->swapFace(t, skip);
+      }
+    }
+    for (int v = 0; v < static_cast<int>(this->IdOf.size()); ++v)
+    {
+      if (!this->Fixed[v])
+      {
+        statistics.vertexMoves += this->smoothVertex(v);
+      }
+    }
+  }
+}
+
+void Improver::writeBack(std::vector<PointId>& movedPoints)
+{
+  PartitionMesh improved;
+  const bool hasRegions = !this->Partition.regions.empty();
+  for (std::size_t t = 0; t < this->Tets.size(); ++t)
+  {
+    if (!this->Alive[t])
+    {
+      continue;
+    }
+    const Corners& c = this->Tets[t];
+    improved.tets.push_back(
+      { this->IdOf[c[0]], this->IdOf[c[1]], this->IdOf[c[2]], this->IdOf[c[3]] });
+    improved.parentCells.push_back(this->Parents[t]);
+    if (hasRegions)
+    {
+      improved.regions.push_back(this->Regions[t]);
+    }
+  }
+  this->Partition = std::move(improved);
+  for (std::size_t v = 0; v < this->IdOf.size(); ++v)
+  {
+    if (this->Moved[v])
+    {
+      movedPoints.push_back(this->IdOf[v]);
+    }
+  }
+}
+
+} // namespace
+
+Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
+  const ImprovementParameters& parameters, ImprovementStatistics& statistics,
+  std::vector<PointId>& movedPoints)
+{
+  if (partition.tets.empty() || parameters.passes <= 0)
+  {
+    return Status::success();
+  }
+  const auto poorTets = std::count_if(partition.tets.begin(), partition.tets.end(),
+    [&](const Tet& t)
+    {
+      return meanRatio(points.at(t[0]), points.at(t[1]), points.at(t[2]), points.at(t[3])) <
+        parameters.targetQuality;
+    });
+  statistics.poorTets += poorTets;
+  if (poorTets == 0)
+  {
+    return Status::success(); // nothing to work on: skip building the local structures
+  }
+  try
+  {
+    Improver improver(partition, points);
+    improver.run(parameters, statistics);
+    improver.writeBack(movedPoints);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return Status::failure("out of memory while improving a partition");
+  }
+  return Status::success();
+}
+
+} // namespace cgmesh

@@ -1,0 +1,61 @@
+// Local quality improvement of one partition after refinement: edge removal (a ring of 3 to 7
+// tets around an edge re-triangulated without it: 3->2, 4->4, 5->6, ...), face swaps (2->3) and
+// Laplacian smoothing with rollback.
+//
+// Only what the partition owns alone is touched: vertices on its boundary (partition interfaces
+// and the domain boundary) and on material interfaces never move, and the edges and faces changed
+// are interior to the partition and to one material, so neighbours keep matching faces. A change
+// is kept only when it raises the smallest mean ratio (TetQuality.h) of the tets it replaces and
+// inverts nothing. Serial and deterministic: the same input gives the same output.
+#ifndef cgmesh_QualityImprover_h
+#define cgmesh_QualityImprover_h
+
+#include "Core/PartitionMesh.h"
+#include "Core/ProvisionalIds.h"
+#include "Core/Status.h"
+
+#include <vector>
+
+namespace cgmesh
+{
+
+struct ImprovementParameters
+{
+  int passes = 2; // sweeps of edge removal, face swaps and smoothing
+  // Only tets whose mean ratio is below this are worked on: good tets are left alone, which is
+  // where most of the time would go.
+  double targetQuality = 0.5;
+  // When positive, no change may create a tet larger than this (nor than the largest it replaces):
+  // Delaunay refinement's volume bound survives the improvement.
+  double maximumVolume = 0;
+};
+
+struct ImprovementStatistics
+{
+  std::int64_t edgeRemovals = 0;
+  std::int64_t faceSwaps = 0;
+  std::int64_t vertexMoves = 0;
+  std::int64_t poorTets = 0; // tets below the target when the partition was taken up
+};
+
+// Where a partition's points live: global ids in `global`, provisional ids (see
+// PartitionRefinement) in `provisional`. Improvement writes only the partition's free vertices.
+struct PartitionPoints
+{
+  std::vector<double>* global = nullptr;
+  std::vector<double>* provisional = nullptr;
+
+  double* at(PointId id) const
+  {
+    return const_cast<double*>(pointCoordinates(*global, *provisional, id));
+  }
+};
+
+// Improves `partition` in place; appends the ids of the vertices it moved to `movedPoints`.
+Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
+  const ImprovementParameters& parameters, ImprovementStatistics& statistics,
+  std::vector<PointId>& movedPoints);
+
+} // namespace cgmesh
+
+#endif

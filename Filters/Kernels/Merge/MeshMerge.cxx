@@ -1,0 +1,211 @@
+#include "Merge/MeshMerge.h"
+
+#include "Core/TetLocator.h"
+
+#include <algorithm>
+#include <memory>
+#include <new>
+
+namespace cgmesh
+{
+namespace
+{
+
+// Points whose recorded location no longer holds (moved, or derived from a moved point) get
+// barycentric weights in the input tet that contains their final position.
+class Relocator
+{
+public:
+  Relocator(PointId totalPoints, const RelocationInput& relocation)
+    : Input(relocation.input)
+  {
+    if (!this->Input || !relocation.movedPoints || relocation.movedPoints->empty())
+    {
+      return;
+    }
+    this->Flags.assign(totalPoints, 0);
+    for (PointId p : *relocation.movedPoints)
+    {
+      this->Flags[p] = 1;
+    }
+    const TetMesh* input = this->Input;
+    this->Locator =
+      std::make_unique<TetLocator>(input->tets, [input](PointId id) { return input->point(id); });
+  }
+
+  bool isMoved(PointId p) const { return !this->Flags.empty() && this->Flags[p]; }
+
+  // A new point inherits relocation from any point it is made of.
+  bool inheritsMove(PointId p, const PointSource& location)
+  {
+    for (int slot = 0; slot < 4 && !this->Flags.empty() && !this->Flags[p]; ++slot)
+    {
+      this->Flags[p] = location.weights[slot] != 0 && this->Flags[location.points[slot]];
+    }
+    return this->isMoved(p);
+  }
+
+  void appendLocation(const double* point, PointProvenance& all) const
+  {
+    const auto where = this->Locator->locate(point);
+    for (int k = 0; k < 4; ++k)
+    {
+      all.sources.push_back(this->Input->tets[where.tet][k]);
+      all.weights.push_back(where.barycentric[k]);
+    }
+    all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
+  }
+
+private:
+  const TetMesh* Input;
+  std::vector<char> Flags;
+  std::unique_ptr<TetLocator> Locator;
+};
+
+// The weighted sum of the parents' expansions, equal sources merged.
+void appendExpansion(
+  const PointSource& location, PointProvenance& all, std::vector<std::pair<PointId, double>>& terms)
+{
+  terms.clear();
+  for (int slot = 0; slot < 4; ++slot)
+  {
+    if (location.weights[slot] == 0)
+    {
+      continue;
+    }
+    const PointId parent = location.points[slot];
+    for (std::int64_t k = all.offsets[parent]; k < all.offsets[parent + 1]; ++k)
+    {
+      terms.emplace_back(all.sources[k], location.weights[slot] * all.weights[k]);
+    }
+  }
+  std::sort(terms.begin(), terms.end());
+  for (std::size_t k = 0; k < terms.size(); ++k)
+  {
+    if (k + 1 < terms.size() && terms[k + 1].first == terms[k].first)
+    {
+      terms[k + 1].second += terms[k].second;
+      continue;
+    }
+    all.sources.push_back(terms[k].first);
+    all.weights.push_back(terms[k].second);
+  }
+  all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
+}
+
+// Weights of every global point over input points. A new point is a weighted sum of points with
+// smaller ids (it was inserted after them), so one pass in id order suffices.
+PointProvenance expandProvenance(PointId inputPointCount,
+  const std::vector<PointSource>& newPointSources, const std::vector<double>& coordinates,
+  const RelocationInput& relocation)
+{
+  const PointId total = inputPointCount + static_cast<PointId>(newPointSources.size());
+  Relocator relocator(total, relocation);
+  PointProvenance all;
+  all.offsets.reserve(total + 1);
+  all.offsets.push_back(0);
+  for (PointId p = 0; p < inputPointCount; ++p)
+  {
+    if (relocator.isMoved(p))
+    {
+      relocator.appendLocation(coordinates.data() + 3 * p, all);
+      continue;
+    }
+    all.sources.push_back(p);
+    all.weights.push_back(1.0);
+    all.offsets.push_back(static_cast<std::int64_t>(all.sources.size()));
+  }
+  std::vector<std::pair<PointId, double>> terms;
+  for (std::size_t index = 0; index < newPointSources.size(); ++index)
+  {
+    const PointId point = inputPointCount + static_cast<PointId>(index);
+    if (relocator.inheritsMove(point, newPointSources[index]))
+    {
+      relocator.appendLocation(coordinates.data() + 3 * point, all);
+      continue;
+    }
+    appendExpansion(newPointSources[index], all, terms);
+  }
+  return all;
+}
+
+} // namespace
+
+Status mergePartitions(const std::vector<PartitionMesh>& partitions,
+  const std::vector<double>& coordinates, PointId inputPointCount,
+  const std::vector<PointSource>& newPointSources, MergedMesh& merged,
+  const RelocationInput& relocation)
+{
+  try
+  {
+    const PointId globalCount = static_cast<PointId>(coordinates.size() / 3);
+    std::vector<PointId> outputIdOf(globalCount, -1);
+    for (const PartitionMesh& partition : partitions)
+    {
+      for (const Tet& tet : partition.tets)
+      {
+        for (PointId p : tet)
+        {
+          outputIdOf[p] = 0;
+        }
+      }
+    }
+    PointId outputCount = 0;
+    for (PointId p = 0; p < globalCount; ++p)
+    {
+      if (outputIdOf[p] == 0)
+      {
+        outputIdOf[p] = outputCount++;
+      }
+    }
+    merged = MergedMesh();
+    merged.removedPoints = globalCount - outputCount;
+
+    const PointProvenance all =
+      expandProvenance(inputPointCount, newPointSources, coordinates, relocation);
+    merged.mesh.coordinates.reserve(3 * outputCount);
+    merged.provenance.offsets.reserve(outputCount + 1);
+    merged.provenance.offsets.push_back(0);
+    for (PointId p = 0; p < globalCount; ++p)
+    {
+      if (outputIdOf[p] < 0)
+      {
+        continue;
+      }
+      merged.mesh.coordinates.insert(merged.mesh.coordinates.end(), coordinates.begin() + 3 * p,
+        coordinates.begin() + 3 * p + 3);
+      merged.provenance.sources.insert(merged.provenance.sources.end(),
+        all.sources.begin() + all.offsets[p], all.sources.begin() + all.offsets[p + 1]);
+      merged.provenance.weights.insert(merged.provenance.weights.end(),
+        all.weights.begin() + all.offsets[p], all.weights.begin() + all.offsets[p + 1]);
+      merged.provenance.offsets.push_back(
+        static_cast<std::int64_t>(merged.provenance.sources.size()));
+    }
+
+    const bool hasRegions = std::any_of(partitions.begin(), partitions.end(),
+      [](const PartitionMesh& partition) { return !partition.regions.empty(); });
+    for (std::size_t part = 0; part < partitions.size(); ++part)
+    {
+      const PartitionMesh& partition = partitions[part];
+      for (std::size_t t = 0; t < partition.tets.size(); ++t)
+      {
+        const Tet& tet = partition.tets[t];
+        merged.mesh.tets.push_back(
+          { outputIdOf[tet[0]], outputIdOf[tet[1]], outputIdOf[tet[2]], outputIdOf[tet[3]] });
+        merged.parentCell.push_back(partition.parentCells[t]);
+        merged.partitionOfCell.push_back(static_cast<int>(part));
+        if (hasRegions)
+        {
+          merged.mesh.regions.push_back(partition.regions[t]);
+        }
+      }
+    }
+  }
+  catch (const std::bad_alloc&)
+  {
+    return Status::failure("out of memory while merging partitions");
+  }
+  return Status::success();
+}
+
+} // namespace cgmesh

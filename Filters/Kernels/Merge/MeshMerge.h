@@ -1,0 +1,54 @@
+// Joins the refined partitions into one conforming mesh: drops points no tet uses, numbers the
+// rest in their global order (each interface point appears once: partitions share global ids),
+// and expresses every output point as a weighted sum of input points for data interpolation.
+#ifndef cgmesh_MeshMerge_h
+#define cgmesh_MeshMerge_h
+
+#include "Core/EdgeSplits.h"
+#include "Core/PartitionMesh.h"
+#include "Core/Status.h"
+#include "Core/TetMesh.h"
+
+#include <vector>
+
+namespace cgmesh
+{
+
+// Output point i is the weighted sum of input points
+// sources[offsets[i] .. offsets[i + 1]) with the matching weights: linear interpolation of point
+// data. Input points that survive have a single source with weight 1.
+struct PointProvenance
+{
+  std::vector<std::int64_t> offsets;
+  std::vector<PointId> sources;
+  std::vector<double> weights;
+};
+
+struct MergedMesh
+{
+  TetMesh mesh;
+  std::vector<CellId> parentCell;   // per output tet: the input tet it came from
+  std::vector<int> partitionOfCell; // per output tet
+  PointProvenance provenance;       // per output point, over input point ids
+  PointId removedPoints = 0;        // points no tet uses (unused input points)
+};
+
+// `coordinates` holds all global points; points from `inputPointCount` on were created by
+// refinement at the locations in `newPointSources` (one entry per created point, in id order).
+// Points quality improvement moved, and points whose location derives from one (a midpoint of a
+// moved point, ...), no longer lie where their recorded sources say: those get their provenance
+// from the input tet that contains their final position (`input` is the unrefined mesh).
+struct RelocationInput
+{
+  const TetMesh* input = nullptr;
+  const std::vector<PointId>* movedPoints = nullptr;
+};
+
+Status mergePartitions(const std::vector<PartitionMesh>& partitions,
+  const std::vector<double>& coordinates, PointId inputPointCount,
+  const std::vector<PointSource>& newPointSources, MergedMesh& merged,
+  const RelocationInput& relocation = RelocationInput());
+
+} // namespace cgmesh
+
+#endif

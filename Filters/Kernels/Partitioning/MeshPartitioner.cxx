@@ -1,0 +1,235 @@
+#include "Partitioning/MeshPartitioner.h"
+
+#include "Core/FaceKey.h"
+
+#include <metis.h>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <string>
+#include <tuple>
+
+namespace cgmesh
+{
+
+DualGraph buildDualGraph(const TetMesh& mesh)
+{
+  struct FaceOfTet
+  {
+    std::array<PointId, 3> corners;
+    CellId tet;
+  };
+  std::vector<FaceOfTet> faces;
+  faces.reserve(4 * mesh.tets.size());
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      faces.push_back({ sortedFace(mesh.tets[t].data(), skip), t });
+    }
+  }
+  std::sort(faces.begin(), faces.end(),
+    [](const FaceOfTet& a, const FaceOfTet& b)
+    { return std::tie(a.corners, a.tet) < std::tie(b.corners, b.tet); });
+
+  std::vector<std::pair<CellId, CellId>> adjacency;
+  adjacency.reserve(faces.size());
+  for (std::size_t i = 0; i + 1 < faces.size(); ++i)
+  {
+    if (faces[i].corners == faces[i + 1].corners && faces[i].tet != faces[i + 1].tet)
+    {
+      adjacency.emplace_back(faces[i].tet, faces[i + 1].tet);
+      adjacency.emplace_back(faces[i + 1].tet, faces[i].tet);
+    }
+  }
+  std::sort(adjacency.begin(), adjacency.end());
+  adjacency.erase(std::unique(adjacency.begin(), adjacency.end()), adjacency.end());
+
+  DualGraph graph;
+  graph.offsets.assign(mesh.tets.size() + 1, 0);
+  graph.neighbours.reserve(adjacency.size());
+  for (const auto& pair : adjacency)
+  {
+    ++graph.offsets[pair.first + 1];
+    graph.neighbours.push_back(pair.second);
+  }
+  for (std::size_t i = 0; i < mesh.tets.size(); ++i)
+  {
+    graph.offsets[i + 1] += graph.offsets[i];
+  }
+  return graph;
+}
+
+namespace
+{
+
+bool isConnected(const DualGraph& graph)
+{
+  const std::size_t count = graph.offsets.size() - 1;
+  std::vector<char> reached(count, 0);
+  std::vector<std::size_t> stack = { 0 };
+  reached[0] = 1;
+  std::size_t visited = 0;
+  while (!stack.empty())
+  {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    ++visited;
+    for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
+    {
+      const std::size_t w = static_cast<std::size_t>(graph.neighbours[k]);
+      if (!reached[w])
+      {
+        reached[w] = 1;
+        stack.push_back(w);
+      }
+    }
+  }
+  return visited == count;
+}
+
+// METIS k-way on a graph in compressed rows; contiguous parts when the graph is connected.
+Status partitionGraphKway(const DualGraph& graph, int parts, std::vector<int>& partOfVertex)
+{
+  const std::int64_t vertexTotal = static_cast<std::int64_t>(graph.offsets.size()) - 1;
+  partOfVertex.assign(vertexTotal, 0);
+  if (parts <= 1 || vertexTotal == 0)
+  {
+    return Status::success();
+  }
+  if (graph.neighbours.size() >= static_cast<std::size_t>(std::numeric_limits<idx_t>::max()))
+  {
+    return Status::failure("mesh too large for METIS' 32-bit indices");
+  }
+  std::vector<idx_t> offsets(graph.offsets.begin(), graph.offsets.end());
+  std::vector<idx_t> neighbours(graph.neighbours.begin(), graph.neighbours.end());
+  std::vector<idx_t> partition(vertexTotal, 0);
+  idx_t vertexCount = static_cast<idx_t>(vertexTotal);
+  idx_t constraintCount = 1;
+  idx_t partCount = parts;
+  idx_t edgeCut = 0;
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_NUMBERING] = 0;
+  options[METIS_OPTION_SEED] = 1;
+  // Contiguity is only possible for a connected graph (asking anyway makes METIS complain).
+  options[METIS_OPTION_CONTIG] = isConnected(graph) ? 1 : 0;
+  auto run = [&]()
+  {
+    return METIS_PartGraphKway(&vertexCount, &constraintCount, offsets.data(), neighbours.data(),
+      nullptr, nullptr, nullptr, &partCount, nullptr, nullptr, options, &edgeCut, partition.data());
+  };
+  int result = run();
+  if (result != METIS_OK && options[METIS_OPTION_CONTIG] == 1)
+  {
+    options[METIS_OPTION_CONTIG] = 0;
+    result = run();
+  }
+  if (result != METIS_OK)
+  {
+    return Status::failure(
+      "METIS failed to partition the mesh (code " + std::to_string(result) + ")");
+  }
+  std::copy(partition.begin(), partition.end(), partOfVertex.begin());
+  return Status::success();
+}
+
+// The subgraph induced by `vertices` (ascending), renumbered 0..n-1 in that order.
+DualGraph inducedSubgraph(
+  const DualGraph& graph, const std::vector<CellId>& vertices, std::vector<CellId>& localIndexOf)
+{
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    localIndexOf[vertices[i]] = static_cast<CellId>(i);
+  }
+  DualGraph sub;
+  sub.offsets.push_back(0);
+  for (CellId v : vertices)
+  {
+    for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
+    {
+      const CellId local = localIndexOf[graph.neighbours[k]];
+      if (local >= 0)
+      {
+        sub.neighbours.push_back(local);
+      }
+    }
+    sub.offsets.push_back(static_cast<std::int64_t>(sub.neighbours.size()));
+  }
+  for (CellId v : vertices)
+  {
+    localIndexOf[v] = -1;
+  }
+  return sub;
+}
+
+} // namespace
+
+Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell)
+{
+  const CellId tetCount = mesh.numberOfTets();
+  partitionOfCell.assign(tetCount, 0);
+  if (numberOfPartitions < 1)
+  {
+    return Status::failure("the number of partitions must be at least 1");
+  }
+  if (numberOfPartitions > 1 && numberOfPartitions > tetCount)
+  {
+    return Status::failure("more partitions than tets");
+  }
+  if (numberOfPartitions == 1)
+  {
+    return Status::success();
+  }
+  return partitionGraphKway(buildDualGraph(mesh), numberOfPartitions, partitionOfCell);
+}
+
+Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
+  std::vector<int>& partitionOfCell, int& numberOfPartitions)
+{
+  if (!mesh.hasRegions())
+  {
+    return Status::failure("partitioning by region needs a region array");
+  }
+  if (partitionsPerRegion < 1)
+  {
+    return Status::failure("the number of partitions per region must be at least 1");
+  }
+  std::vector<int> regionIds = mesh.regions;
+  std::sort(regionIds.begin(), regionIds.end());
+  regionIds.erase(std::unique(regionIds.begin(), regionIds.end()), regionIds.end());
+  std::vector<std::vector<CellId>> tetsOfRegion(regionIds.size());
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    const auto position = std::lower_bound(regionIds.begin(), regionIds.end(), mesh.regions[t]);
+    tetsOfRegion[position - regionIds.begin()].push_back(t);
+  }
+
+  const DualGraph graph = partitionsPerRegion > 1 ? buildDualGraph(mesh) : DualGraph();
+  std::vector<CellId> localIndexOf(mesh.tets.size(), -1);
+  partitionOfCell.assign(mesh.tets.size(), 0);
+  numberOfPartitions = 0;
+  for (const std::vector<CellId>& tets : tetsOfRegion)
+  {
+    const int parts = static_cast<int>(
+      std::min<std::int64_t>(partitionsPerRegion, static_cast<std::int64_t>(tets.size())));
+    std::vector<int> local(tets.size(), 0);
+    if (parts > 1)
+    {
+      Status status = partitionGraphKway(inducedSubgraph(graph, tets, localIndexOf), parts, local);
+      if (!status.ok())
+      {
+        return status;
+      }
+    }
+    for (std::size_t i = 0; i < tets.size(); ++i)
+    {
+      partitionOfCell[tets[i]] = numberOfPartitions + local[i];
+    }
+    numberOfPartitions += parts;
+  }
+  return Status::success();
+}
+
+} // namespace cgmesh

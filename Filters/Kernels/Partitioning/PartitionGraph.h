@@ -1,0 +1,35 @@
+// The partition graph: two partitions are adjacent when they share at least one vertex (smoothing
+// moves vertices and an edge split touches both end points, so sharing an edge is not enough).
+#ifndef cgmesh_PartitionGraph_h
+#define cgmesh_PartitionGraph_h
+
+#include "Core/TetMesh.h"
+
+#include <vector>
+
+namespace cgmesh
+{
+
+struct PartitionGraph
+{
+  int numberOfPartitions = 0;
+  std::vector<std::int64_t> offsets; // size numberOfPartitions + 1
+  std::vector<int> neighbours;       // sorted within each row
+
+  int degree(int partition) const
+  {
+    return static_cast<int>(offsets[partition + 1] - offsets[partition]);
+  }
+  const int* neighboursOf(int partition) const { return neighbours.data() + offsets[partition]; }
+  std::int64_t numberOfEdges() const { return static_cast<std::int64_t>(neighbours.size()) / 2; }
+};
+
+PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
+  const std::vector<int>& partitionOfCell, int numberOfPartitions, PointId numberOfPoints);
+
+// Builds a graph from an explicit undirected edge list (tests and colouring benchmarks).
+PartitionGraph makePartitionGraph(int numberOfPartitions, std::vector<std::pair<int, int>> edges);
+
+} // namespace cgmesh
+
+#endif

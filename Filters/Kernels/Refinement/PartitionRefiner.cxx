@@ -1,0 +1,281 @@
+#include "Refinement/PartitionRefiner.h"
+
+#include "Core/Geometry.h"
+
+#include <algorithm>
+#include <new>
+
+namespace cgmesh
+{
+namespace
+{
+
+class SplitSession
+{
+public:
+  SplitSession(const RefinementContext& context, const EdgeMidpointMap& received,
+    PartitionRefinement& refinement)
+    : Context(context)
+    , Received(received)
+    , Refinement(refinement)
+  {
+  }
+
+  const double* coordinatesOf(PointId id) const
+  {
+    return pointCoordinates(*this->Context.coordinates, this->Refinement.newCoordinates, id);
+  }
+
+  bool isLong(PointId a, PointId b) const
+  {
+    const double* pa = this->coordinatesOf(std::min(a, b));
+    const double* pb = this->coordinatesOf(std::max(a, b));
+    return squaredDistance(pa, pb) > this->Context.squaredThreshold;
+  }
+
+  // The midpoint of edge (a, b): the one a neighbour inserted, one made earlier in this
+  // partition, or a new one.
+  PointId midpointOf(PointId a, PointId b)
+  {
+    const EdgeKey key = EdgeKey::of(a, b);
+    const auto known = this->Created.find(key);
+    if (known != this->Created.end())
+    {
+      return known->second;
+    }
+    PointId vertex;
+    const auto healed = this->Received.find(key);
+    if (healed != this->Received.end())
+    {
+      vertex = healed->second;
+      this->Refinement.newInterfacePoints.insert(vertex);
+      ++this->Refinement.healedSplits;
+    }
+    else
+    {
+      vertex = this->createMidpoint(key);
+    }
+    this->Created.emplace(key, vertex);
+    return vertex;
+  }
+
+  void reserve(std::size_t expectedSplits) { this->Created.reserve(expectedSplits); }
+
+private:
+  PointId createMidpoint(const EdgeKey& key)
+  {
+    // Copies: the end points may themselves be new, and the vector below may reallocate.
+    double pa[3], pb[3];
+    std::copy_n(this->coordinatesOf(key.low), 3, pa);
+    std::copy_n(this->coordinatesOf(key.high), 3, pb);
+    const PointId vertex = provisionalId(this->Refinement.newPointSources.size());
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      this->Refinement.newCoordinates.push_back(0.5 * (pa[axis] + pb[axis]));
+    }
+    this->Refinement.newPointSources.push_back(PointSource::midpoint(key));
+    ++this->Refinement.createdSplits;
+    if (this->onInterface(key.low) && this->onInterface(key.high))
+    {
+      this->Refinement.outbox.push_back(OutboxEntry{ key, vertex });
+      this->Refinement.newInterfacePoints.insert(vertex);
+    }
+    return vertex;
+  }
+
+  // Whether a vertex may be shared with another partition (so may the edges between two such).
+  bool onInterface(PointId id) const
+  {
+    const auto& flags = *this->Context.interfaceVertex;
+    if (id >= 0 && id < static_cast<PointId>(flags.size()))
+    {
+      return flags[id] != 0;
+    }
+    return this->Refinement.newInterfacePoints.count(id) != 0;
+  }
+
+  const RefinementContext& Context;
+  const EdgeMidpointMap& Received;
+  PartitionRefinement& Refinement;
+  EdgeMidpointMap Created;
+};
+
+std::array<int, 4> cornerRanks(const Tet& tet)
+{
+  std::array<int, 4> ranks;
+  for (int i = 0; i < 4; ++i)
+  {
+    ranks[i] = 0;
+    for (int j = 0; j < 4; ++j)
+    {
+      ranks[i] += vertexRank(tet[j]) < vertexRank(tet[i]);
+    }
+  }
+  return ranks;
+}
+
+// For a fully split tet: the shortest of the three octahedron diagonals (ties: lowest index),
+// which gives the best-shaped children.
+int shortestDiagonal(const SplitSession& session, const std::array<PointId, 10>& vertices)
+{
+  const int axisEdge[3][2] = { { 0, 5 }, { 1, 4 }, { 2, 3 } };
+  int best = 0;
+  double bestLength = 0;
+  for (int d = 0; d < 3; ++d)
+  {
+    const double length = squaredDistance(session.coordinatesOf(vertices[4 + axisEdge[d][0]]),
+      session.coordinatesOf(vertices[4 + axisEdge[d][1]]));
+    if (d == 0 || length < bestLength)
+    {
+      best = d;
+      bestLength = length;
+    }
+  }
+  return best;
+}
+
+} // namespace
+
+std::vector<char> findInterfaceVertices(
+  const std::vector<PartitionMesh>& partitions, PointId numberOfPoints)
+{
+  std::vector<int> firstPartition(numberOfPoints, -1);
+  std::vector<char> interfaceVertex(numberOfPoints, 0);
+  for (std::size_t part = 0; part < partitions.size(); ++part)
+  {
+    for (const Tet& tet : partitions[part].tets)
+    {
+      for (PointId p : tet)
+      {
+        if (firstPartition[p] < 0)
+        {
+          firstPartition[p] = static_cast<int>(part);
+        }
+        else if (firstPartition[p] != static_cast<int>(part))
+        {
+          interfaceVertex[p] = 1;
+        }
+      }
+    }
+  }
+  return interfaceVertex;
+}
+
+std::int64_t predictTemplateTetCount(
+  const PartitionMesh& partition, const RefinementContext& context)
+{
+  std::int64_t count = 0;
+  const std::vector<double>& coordinates = *context.coordinates;
+  for (const Tet& tet : partition.tets)
+  {
+    int splitMask = 0;
+    for (int e = 0; e < 6; ++e)
+    {
+      const PointId a = tet[TetEdgeCorners[e][0]], b = tet[TetEdgeCorners[e][1]];
+      const double lengthSquared = squaredDistance(
+        coordinates.data() + 3 * std::min(a, b), coordinates.data() + 3 * std::max(a, b));
+      splitMask |= (lengthSquared > context.squaredThreshold) << e;
+    }
+    count += splitMask == 0 ? 1
+      : splitMask == 63     ? 8
+                            : static_cast<std::int64_t>(
+                            context.templates->partialSplit(splitMask, cornerRanks(tet)).size());
+  }
+  return count;
+}
+
+Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
+  const EdgeMidpointMap& received, PartitionRefinement& refinement, const EdgeFilter& filter)
+{
+  try
+  {
+    SplitSession session(context, received, refinement);
+    session.reserve(partition.tets.size());
+    const bool hasRegions = !partition.regions.empty();
+    PartitionMesh refined;
+    refined.tets.reserve(partition.tets.size() * 2);
+    refined.parentCells.reserve(partition.tets.size() * 2);
+
+    for (std::size_t t = 0; t < partition.tets.size(); ++t)
+    {
+      const Tet& tet = partition.tets[t];
+      std::array<PointId, 10> vertices = { tet[0], tet[1], tet[2], tet[3] };
+      int splitMask = 0;
+      for (int e = 0; e < 6; ++e)
+      {
+        const PointId a = tet[TetEdgeCorners[e][0]];
+        const PointId b = tet[TetEdgeCorners[e][1]];
+        if (session.isLong(a, b) && filter.allows(EdgeKey::of(a, b)))
+        {
+          splitMask |= 1 << e;
+          vertices[4 + e] = session.midpointOf(a, b);
+        }
+      }
+      auto emit = [&](const Tet& child)
+      {
+        refined.tets.push_back(child);
+        refined.parentCells.push_back(partition.parentCells[t]);
+        if (hasRegions)
+        {
+          refined.regions.push_back(partition.regions[t]);
+        }
+      };
+      if (splitMask == 0)
+      {
+        emit(tet);
+        continue;
+      }
+      const std::vector<LocalTet>& children = splitMask == 63
+        ? context.templates->fullSplit(shortestDiagonal(session, vertices))
+        : context.templates->partialSplit(splitMask, cornerRanks(tet));
+      for (const LocalTet& child : children)
+      {
+        emit({ vertices[child[0]], vertices[child[1]], vertices[child[2]], vertices[child[3]] });
+      }
+    }
+    partition = std::move(refined);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return Status::failure("out of memory while refining a partition");
+  }
+  return Status::success();
+}
+
+void finalizeNewPoints(
+  PartitionMesh& partition, PartitionRefinement& refinement, PointId firstGlobalId)
+{
+  auto globalId = [firstGlobalId](PointId id)
+  {
+    return finalId(id, firstGlobalId);
+  };
+  for (Tet& tet : partition.tets)
+  {
+    for (PointId& id : tet)
+    {
+      id = globalId(id);
+    }
+  }
+  for (OutboxEntry& entry : refinement.outbox)
+  {
+    entry.edge = EdgeKey::of(globalId(entry.edge.low), globalId(entry.edge.high));
+    entry.vertex = globalId(entry.vertex);
+  }
+  refinement.newInterfacePoints.clear();
+  for (PointId& point : refinement.movedPoints)
+  {
+    point = globalId(point);
+  }
+  for (PointSource& source : refinement.newPointSources)
+  {
+    for (int slot = 0; slot < 4; ++slot)
+    {
+      if (source.weights[slot] != 0)
+      {
+        source.points[slot] = globalId(source.points[slot]);
+      }
+    }
+  }
+}
+
+} // namespace cgmesh

@@ -1,0 +1,82 @@
+// Serial template refinement of one partition: heals the splits its processed neighbours made on
+// shared edges, splits every other edge longer than the threshold, and posts the splits of
+// interface edges to its outbox.
+#ifndef cgmesh_PartitionRefiner_h
+#define cgmesh_PartitionRefiner_h
+
+#include "Core/EdgeSplits.h"
+#include "Core/PartitionMesh.h"
+#include "Core/ProvisionalIds.h"
+#include "Core/Status.h"
+#include "Refinement/TemplateTable.h"
+#include "Core/TetMesh.h"
+
+#include <unordered_set>
+#include <vector>
+
+namespace cgmesh
+{
+
+// Read-only state shared by all partitions during one iteration.
+struct RefinementContext
+{
+  const std::vector<double>* coordinates = nullptr;   // global points, xyz
+  const std::vector<char>* interfaceVertex = nullptr; // 1 when a point lies in 2+ partitions
+  double squaredThreshold = 0;                        // split edges with a larger squared length
+  const TemplateTable* templates = nullptr;
+};
+
+using EdgeSet = std::unordered_set<EdgeKey, EdgeKeyHash>;
+
+// Restricts which long edges a refinement pass may split: all (no set), only the listed ones, or
+// all but the listed ones.
+struct EdgeFilter
+{
+  const EdgeSet* edges = nullptr;
+  bool onlyListed = true;
+
+  bool allows(const EdgeKey& edge) const
+  {
+    return !edges || (edges->count(edge) != 0) == onlyListed;
+  }
+};
+
+// Vertices a partition created. Until the colour is finished they carry provisional ids
+// (Core/ProvisionalIds.h); finalizeNewPoints() turns them into global ids.
+struct PartitionRefinement
+{
+  std::vector<double> newCoordinates;       // xyz per new vertex
+  std::vector<PointSource> newPointSources; // where each new vertex lies
+  Outbox outbox;
+  // Vertices this partition made or received during the iteration that lie on an interface
+  // (older ones are flagged in RefinementContext::interfaceVertex).
+  std::unordered_set<PointId> newInterfacePoints;
+  std::vector<PointId> movedPoints; // vertices quality improvement moved
+  std::int64_t healedSplits = 0;    // splits taken from neighbours' outboxes
+  std::int64_t createdSplits = 0;   // splits this partition made itself
+};
+
+// How many tets refinePartition() will make of `partition` (without healing, which never adds
+// splits the partition would not make itself): the size guard's forecast.
+std::int64_t predictTemplateTetCount(
+  const PartitionMesh& partition, const RefinementContext& context);
+
+// Marks the points that lie in tets of two or more partitions: only edges between two such points
+// can be shared, so only their splits go to outboxes.
+std::vector<char> findInterfaceVertices(
+  const std::vector<PartitionMesh>& partitions, PointId numberOfPoints);
+
+// Refines `partition` in place. The tets' corners are global ids; the result may reference
+// provisional ids (see above).
+Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
+  const EdgeMidpointMap& received, PartitionRefinement& refinement,
+  const EdgeFilter& filter = EdgeFilter());
+
+// Rewrites provisional ids of the partition's tets, outbox and new point sources into global ids
+// starting at `firstGlobalId`.
+void finalizeNewPoints(
+  PartitionMesh& partition, PartitionRefinement& refinement, PointId firstGlobalId);
+
+} // namespace cgmesh
+
+#endif

@@ -1,0 +1,402 @@
+#include "Refinement/TetGenRefiner.h"
+
+#include "Core/ConstrainedFaces.h"
+#include "Core/FaceKey.h"
+#include "Core/Geometry.h"
+#include "Core/TetLocator.h"
+
+#define TETLIBRARY
+#include <tetgen.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <new>
+#include <unordered_map>
+
+namespace cgmesh
+{
+namespace
+{
+
+// Enough to halve an interface edge down from 2^8 times the interface length.
+constexpr int MaximumTemplateRounds = 8;
+
+void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges)
+{
+  for (const Face& face : faces)
+  {
+    edges.insert(EdgeKey::of(face[0], face[1]));
+    edges.insert(EdgeKey::of(face[1], face[2]));
+    edges.insert(EdgeKey::of(face[0], face[2]));
+  }
+}
+
+// The partition renumbered 0..n-1 for TetGen, and the way back.
+struct LocalNumbering
+{
+  std::vector<PointId> idOfLocal;
+  std::unordered_map<PointId, int> localOfId;
+};
+
+class TetGenSession
+{
+public:
+  TetGenSession(const PartitionMesh& partition, const RefinementContext& context,
+    const PartitionRefinement& refinement)
+    : Partition(partition)
+    , Context(context)
+    , Refinement(refinement)
+  {
+  }
+
+  const double* coordinatesOf(PointId id) const
+  {
+    return pointCoordinates(*this->Context.coordinates, this->Refinement.newCoordinates, id);
+  }
+
+  // Fills TetGen's input from the partition and the faces it must keep.
+  void prepareInput(tetgenio& in, const std::vector<Face>& keptFaces)
+  {
+    for (const Tet& tet : this->Partition.tets)
+    {
+      for (PointId p : tet)
+      {
+        if (this->Numbering.localOfId.emplace(p, static_cast<int>(this->Numbering.idOfLocal.size()))
+              .second)
+        {
+          this->Numbering.idOfLocal.push_back(p);
+        }
+      }
+    }
+    in.firstnumber = 0;
+    in.numberofpoints = static_cast<int>(this->Numbering.idOfLocal.size());
+    in.pointlist = new REAL[3 * in.numberofpoints];
+    for (int i = 0; i < in.numberofpoints; ++i)
+    {
+      std::copy_n(this->coordinatesOf(this->Numbering.idOfLocal[i]), 3, in.pointlist + 3 * i);
+    }
+    in.numberoftetrahedra = static_cast<int>(this->Partition.tets.size());
+    in.numberofcorners = 4;
+    in.tetrahedronlist = new int[4 * in.numberoftetrahedra];
+    in.numberoftetrahedronattributes = 1;
+    in.tetrahedronattributelist = new REAL[in.numberoftetrahedra];
+    for (int t = 0; t < in.numberoftetrahedra; ++t)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        in.tetrahedronlist[4 * t + k] = this->Numbering.localOfId.at(this->Partition.tets[t][k]);
+      }
+      in.tetrahedronattributelist[t] =
+        this->Partition.regions.empty() ? 0.0 : this->Partition.regions[t];
+    }
+    // The faces to keep, each its own facet (a distinct marker): TetGen merges coplanar
+    // neighbouring boundary triangles otherwise and may flip their shared edge, which the
+    // partition across would not see.
+    in.numberoftrifaces = static_cast<int>(keptFaces.size());
+    in.trifacelist = new int[3 * keptFaces.size()];
+    in.trifacemarkerlist = new int[keptFaces.size()];
+    this->KeptFaces.clear();
+    for (std::size_t f = 0; f < keptFaces.size(); ++f)
+    {
+      std::array<int, 3> local;
+      for (int k = 0; k < 3; ++k)
+      {
+        local[k] = this->Numbering.localOfId.at(keptFaces[f][k]);
+        in.trifacelist[3 * f + k] = local[k];
+      }
+      in.trifacemarkerlist[f] = static_cast<int>(f) + 1;
+      std::sort(local.begin(), local.end());
+      this->KeptFaces.push_back(local);
+    }
+    std::sort(this->KeptFaces.begin(), this->KeptFaces.end());
+  }
+
+  // Checks what TetGen returned: input points kept in place, positive tets, the same boundary
+  // and region interfaces, the same volume per region. Empty when valid.
+  std::string validate(const tetgenio& in, const tetgenio& out) const;
+
+  // Replaces the partition by TetGen's output; new points are placed in the old tets.
+  void adoptOutput(const tetgenio& out, PartitionMesh& partition, PartitionRefinement& refinement,
+    DelaunayOutcome& outcome) const;
+
+private:
+  const PartitionMesh& Partition;
+  const RefinementContext& Context;
+  const PartitionRefinement& Refinement;
+  LocalNumbering Numbering;
+  std::vector<std::array<int, 3>> KeptFaces; // in local numbers, sorted
+};
+
+std::map<int, double> regionVolumes(const tetgenio& io)
+{
+  std::map<int, double> volumes;
+  for (int t = 0; t < io.numberoftetrahedra; ++t)
+  {
+    const int* c = io.tetrahedronlist + 4 * t;
+    const double volume = signedVolume6(io.pointlist + 3 * c[0], io.pointlist + 3 * c[1],
+      io.pointlist + 3 * c[2], io.pointlist + 3 * c[3]);
+    volumes[static_cast<int>(std::lround(io.tetrahedronattributelist[t]))] += volume;
+  }
+  return volumes;
+}
+
+// The faces TetGen must have kept: hull faces and faces between two attributes, sorted.
+std::vector<std::array<int, 3>> hullAndInterfaceFaces(const tetgenio& io)
+{
+  struct FaceOfTet
+  {
+    std::array<int, 3> corners;
+    int tet;
+  };
+  std::vector<FaceOfTet> faces;
+  faces.reserve(4 * static_cast<std::size_t>(io.numberoftetrahedra));
+  for (int t = 0; t < io.numberoftetrahedra; ++t)
+  {
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      faces.push_back({ sortedFace(io.tetrahedronlist + 4 * t, skip), t });
+    }
+  }
+  std::sort(faces.begin(), faces.end(),
+    [](const FaceOfTet& a, const FaceOfTet& b) { return a.corners < b.corners; });
+  std::vector<std::array<int, 3>> kept;
+  for (std::size_t i = 0; i < faces.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].corners == faces[i].corners)
+    {
+      ++j;
+    }
+    if (j - i == 1 ||
+      (j - i == 2 &&
+        io.tetrahedronattributelist[faces[i].tet] != io.tetrahedronattributelist[faces[i + 1].tet]))
+    {
+      kept.push_back(faces[i].corners);
+    }
+    i = j;
+  }
+  return kept;
+}
+
+std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) const
+{
+  if (out.numberofpoints < in.numberofpoints || out.numberoftetrahedra < 1 ||
+    out.numberofcorners != 4 || out.numberoftetrahedronattributes < 1 || out.firstnumber != 0)
+  {
+    return "TetGen returned an incomplete mesh";
+  }
+  if (!std::equal(in.pointlist, in.pointlist + 3 * in.numberofpoints, out.pointlist))
+  {
+    return "TetGen moved or renumbered input points";
+  }
+  // Edges this much shorter than the partition are rounding noise, not refinement: TetGen can
+  // leave clusters of such points on some inputs.
+  double low[3] = { in.pointlist[0], in.pointlist[1], in.pointlist[2] };
+  double high[3] = { low[0], low[1], low[2] };
+  for (int p = 0; p < in.numberofpoints; ++p)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      low[axis] = std::min(low[axis], in.pointlist[3 * p + axis]);
+      high[axis] = std::max(high[axis], in.pointlist[3 * p + axis]);
+    }
+  }
+  const double shortestAllowed = 1e-8 * std::sqrt(squaredDistance(low, high));
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+  {
+    const int* c = out.tetrahedronlist + 4 * t;
+    if (*std::min_element(c, c + 4) < 0 || *std::max_element(c, c + 4) >= out.numberofpoints ||
+      !(signedVolume6(out.pointlist + 3 * c[0], out.pointlist + 3 * c[1], out.pointlist + 3 * c[2],
+          out.pointlist + 3 * c[3]) > 0))
+    {
+      return "TetGen returned an invalid or inverted tetrahedron";
+    }
+    double shortest = HUGE_VAL;
+    for (const auto& edge : TetEdgeCorners)
+    {
+      shortest = std::min(
+        shortest, squaredDistance(out.pointlist + 3 * c[edge[0]], out.pointlist + 3 * c[edge[1]]));
+    }
+    if (std::sqrt(shortest) < shortestAllowed)
+    {
+      return "TetGen returned a tetrahedron with an edge of rounding-noise length";
+    }
+  }
+  if (hullAndInterfaceFaces(out) != this->KeptFaces)
+  {
+    return "TetGen changed the partition boundary or a material interface";
+  }
+  const auto before = regionVolumes(in);
+  const auto after = regionVolumes(out);
+  if (before.size() != after.size())
+  {
+    return "TetGen changed the set of regions";
+  }
+  for (const auto& region : before)
+  {
+    const auto found = after.find(region.first);
+    if (found == after.end() ||
+      std::abs(found->second - region.second) > 1e-9 * std::abs(region.second))
+    {
+      return "TetGen changed a region's volume";
+    }
+  }
+  return std::string();
+}
+
+void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
+  PartitionRefinement& refinement, DelaunayOutcome& outcome) const
+{
+  const int inputPointCount = static_cast<int>(this->Numbering.idOfLocal.size());
+  const TetLocator locator(
+    this->Partition.tets, [this](PointId id) { return this->coordinatesOf(id); });
+
+  // New points first: their ids are needed for the tets. Placing reads the old tets, whose
+  // coordinates live in refinement.newCoordinates, so collect the additions before appending.
+  std::vector<PointId> idOfOutput(this->Numbering.idOfLocal);
+  std::vector<PointSource> sources;
+  for (int i = inputPointCount; i < out.numberofpoints; ++i)
+  {
+    const TetLocator::Location where = locator.locate(out.pointlist + 3 * i);
+    PointSource source;
+    for (int k = 0; k < 4; ++k)
+    {
+      source.points[k] = this->Partition.tets[where.tet][k];
+      source.weights[k] = where.barycentric[k];
+    }
+    sources.push_back(source);
+    idOfOutput.push_back(-static_cast<PointId>(refinement.newPointSources.size() + sources.size()));
+  }
+
+  PartitionMesh refined;
+  refined.tets.reserve(out.numberoftetrahedra);
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+  {
+    const int* c = out.tetrahedronlist + 4 * t;
+    double centroid[3] = { 0, 0, 0 };
+    for (int k = 0; k < 4; ++k)
+    {
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        centroid[axis] += 0.25 * out.pointlist[3 * c[k] + axis];
+      }
+    }
+    refined.tets.push_back(
+      { idOfOutput[c[0]], idOfOutput[c[1]], idOfOutput[c[2]], idOfOutput[c[3]] });
+    refined.parentCells.push_back(this->Partition.parentCells[locator.locate(centroid).tet]);
+    if (!this->Partition.regions.empty())
+    {
+      refined.regions.push_back(static_cast<int>(std::lround(out.tetrahedronattributelist[t])));
+    }
+  }
+  refinement.newCoordinates.insert(refinement.newCoordinates.end(),
+    out.pointlist + 3 * inputPointCount, out.pointlist + 3 * out.numberofpoints);
+  refinement.newPointSources.insert(
+    refinement.newPointSources.end(), sources.begin(), sources.end());
+  outcome.tetgenPoints = out.numberofpoints - inputPointCount;
+  partition = std::move(refined);
+}
+
+std::string tetgenSwitches(const DelaunayParameters& parameters)
+{
+  // r: refine the given mesh; Y: keep the given boundary and interface faces; M: do not merge
+  // coplanar facets; Q: quiet.
+  char switches[128];
+  std::snprintf(switches, sizeof(switches), "rYMQq%.17ga%.17g", parameters.radiusEdgeRatio,
+    parameters.maximumVolume);
+  return switches;
+}
+
+// Runs TetGen on the partition; an empty string means the partition now holds TetGen's mesh.
+std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& keptFaces,
+  const RefinementContext& context, const DelaunayParameters& parameters,
+  const TetGenRunner& runTetGen, PartitionRefinement& refinement, DelaunayOutcome& outcome)
+{
+  if (parameters.simulateFailure)
+  {
+    return "simulated TetGen failure";
+  }
+  TetGenSession session(partition, context, refinement);
+  tetgenio in, out;
+  session.prepareInput(in, keptFaces);
+  std::string failure = runTetGen(in, tetgenSwitches(parameters), out);
+  if (failure.empty())
+  {
+    failure = session.validate(in, out);
+  }
+  if (failure.empty())
+  {
+    session.adoptOutput(out, partition, refinement, outcome);
+  }
+  return failure;
+}
+
+} // namespace
+
+double interfaceEdgeLengthForVolume(double maximumVolume)
+{
+  return std::cbrt(6.0 * std::sqrt(2.0) * maximumVolume);
+}
+
+Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext& context,
+  const EdgeMidpointMap& received, const DelaunayParameters& parameters,
+  const TetGenRunner& runTetGen, PartitionRefinement& refinement, DelaunayOutcome& outcome)
+{
+  if (partition.tets.empty())
+  {
+    return Status::success();
+  }
+  // TetGen may not touch these faces, so templates bring their edges down to the interface
+  // length first, in rounds (a split edge's halves may still be too long). Neighbours take the
+  // same decisions on shared edges and heal them from the outbox, round by round.
+  std::vector<Face> boundaryFaces, regionInterfaceFaces;
+  for (int round = 0; round < MaximumTemplateRounds; ++round)
+  {
+    boundaryFaces.clear();
+    regionInterfaceFaces.clear();
+    findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
+    EdgeSet constrainedEdges;
+    addFaceEdges(boundaryFaces, constrainedEdges);
+    addFaceEdges(regionInterfaceFaces, constrainedEdges);
+    const std::size_t tetsBefore = partition.tets.size();
+    Status status = refinePartition(
+      partition, context, received, refinement, EdgeFilter{ &constrainedEdges, true });
+    if (!status.ok())
+    {
+      return status;
+    }
+    if (partition.tets.size() == tetsBefore)
+    {
+      break; // the faces found above are still the partition's
+    }
+    if (round + 1 == MaximumTemplateRounds)
+    {
+      boundaryFaces.clear();
+      regionInterfaceFaces.clear();
+      findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
+    }
+  }
+  const std::size_t boundaryCount = boundaryFaces.size();
+  std::vector<Face> keptFaces = boundaryFaces;
+  keptFaces.insert(keptFaces.end(), regionInterfaceFaces.begin(), regionInterfaceFaces.end());
+
+  const std::string failure =
+    refineWithTetGen(partition, keptFaces, context, parameters, runTetGen, refinement, outcome);
+  if (failure.empty())
+  {
+    return Status::success();
+  }
+  // Fallback: template-split the interior. The boundary stays frozen: its splits are already
+  // posted, and neighbours will heal exactly those.
+  outcome.fellBack = true;
+  outcome.reason = failure;
+  keptFaces.resize(boundaryCount); // the partition is as TetGen received it
+  EdgeSet frozenEdges;
+  addFaceEdges(keptFaces, frozenEdges);
+  return refinePartition(
+    partition, context, EdgeMidpointMap(), refinement, EdgeFilter{ &frozenEdges, false });
+}
+
+} // namespace cgmesh

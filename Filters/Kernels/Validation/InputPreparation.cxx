@@ -1,0 +1,120 @@
+#include "Validation/InputPreparation.h"
+
+#include "Core/Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace cgmesh
+{
+namespace
+{
+
+Status checkCoordinates(const TetMesh& mesh)
+{
+  std::vector<char> used(mesh.numberOfPoints(), 0);
+  for (const Tet& tet : mesh.tets)
+  {
+    for (PointId p : tet)
+    {
+      used[p] = 1;
+    }
+  }
+  PointId nonFinite = 0, first = -1;
+  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  {
+    const double* x = mesh.point(p);
+    if (used[p] && !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+    {
+      first = nonFinite++ == 0 ? p : first;
+    }
+  }
+  if (nonFinite > 0)
+  {
+    return Status::failure(std::to_string(nonFinite) +
+      " points have NaN or infinite coordinates (the first is point " + std::to_string(first) +
+      ")");
+  }
+  return Status::success();
+}
+
+// Reorients inverted tets; refuses tets whose volume is zero relative to their size.
+Status orientTets(TetMesh& mesh, InputRepairs& repairs)
+{
+  CellId degenerate = 0, first = -1;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    Tet& tet = mesh.tets[t];
+    double longestSquared = 0;
+    for (const auto& edge : TetEdgeCorners)
+    {
+      longestSquared =
+        std::max(longestSquared, squaredEdgeLength(mesh, tet[edge[0]], tet[edge[1]]));
+    }
+    const double volume6 = signedVolume6(mesh, tet);
+    if (!(std::abs(volume6) > 1e-12 * longestSquared * std::sqrt(longestSquared)))
+    {
+      first = degenerate++ == 0 ? t : first;
+    }
+    else if (volume6 < 0)
+    {
+      std::swap(tet[2], tet[3]);
+      ++repairs.reorientedTets;
+    }
+  }
+  if (degenerate > 0)
+  {
+    return Status::failure(std::to_string(degenerate) +
+      " tetrahedra have zero volume or repeat a point (the first is cell " + std::to_string(first) +
+      "); remove them before refining");
+  }
+  return Status::success();
+}
+
+// Points with bit-identical coordinates become one (the lowest id).
+void mergeCoincidentPoints(TetMesh& mesh, InputRepairs& repairs)
+{
+  std::vector<PointId> order(mesh.numberOfPoints());
+  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  {
+    order[p] = p;
+  }
+  auto key = [&mesh](PointId p)
+  {
+    return std::make_tuple(mesh.point(p)[0], mesh.point(p)[1], mesh.point(p)[2], p);
+  };
+  std::sort(order.begin(), order.end(), [&](PointId a, PointId b) { return key(a) < key(b); });
+  std::vector<PointId> representative(mesh.numberOfPoints());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    const bool sameAsPrevious =
+      i > 0 && std::equal(mesh.point(order[i]), mesh.point(order[i]) + 3, mesh.point(order[i - 1]));
+    representative[order[i]] = sameAsPrevious ? representative[order[i - 1]] : order[i];
+    repairs.mergedPoints += sameAsPrevious;
+  }
+  for (Tet& tet : mesh.tets)
+  {
+    for (PointId& p : tet)
+    {
+      p = representative[p];
+    }
+  }
+}
+
+} // namespace
+
+Status prepareInput(const TetMesh& input, TetMesh& prepared, InputRepairs& repairs)
+{
+  repairs = InputRepairs();
+  prepared = input;
+  Status status = checkCoordinates(prepared);
+  if (!status.ok())
+  {
+    return status;
+  }
+  mergeCoincidentPoints(prepared, repairs);
+  return orientTets(prepared, repairs);
+}
+
+} // namespace cgmesh

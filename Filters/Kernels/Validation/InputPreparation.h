@@ -1,0 +1,34 @@
+// Checks and repairs applied to an input mesh before refinement, so that real-world meshes (from
+// Netgen, Gmsh, DOLFIN, TCAD tools) either refine to a valid mesh or are refused with a clear
+// message:
+//   - non-finite coordinates and zero-volume tets are refused;
+//   - inverted tets are reoriented (Netgen's meshes arrive fully inverted in VTK's convention,
+//     DOLFIN's about half), so the output is consistently oriented;
+//   - points with identical coordinates are merged, so that parts which touch without sharing
+//     nodes become conforming. Unused points are dropped later, at the merge.
+// Point ids keep their meaning (a merged point refers to the first of its copies), so point data
+// still comes from the input by id.
+#ifndef cgmesh_InputPreparation_h
+#define cgmesh_InputPreparation_h
+
+#include "Core/Status.h"
+#include "Core/TetMesh.h"
+
+#include <string>
+#include <vector>
+
+namespace cgmesh
+{
+
+struct InputRepairs
+{
+  CellId reorientedTets = 0;
+  PointId mergedPoints = 0;
+};
+
+// Fills `prepared` from `input` (left untouched) or fails with a one-line reason.
+Status prepareInput(const TetMesh& input, TetMesh& prepared, InputRepairs& repairs);
+
+} // namespace cgmesh
+
+#endif
