@@ -1,13 +1,13 @@
 #include "CommandLine.h"
 
-#include "vtkCoarseGrainedMeshAdaptation.h"
-
 #include <cerrno>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <set>
+#include <iomanip>
+#include <sstream>
 
 namespace cgmesh
 {
@@ -71,8 +71,19 @@ Status parseCount(
 namespace
 {
 
-// Options that take no value; they are stored with an empty value.
-const std::set<std::string> RefineFlags = { "--partition-by-region", "--no-improve" };
+// The refine options that take no value (Boolean parameters); they are stored with an empty value.
+std::set<std::string> refineFlags()
+{
+  std::set<std::string> flags;
+  for (const ParameterSpec& spec : parameterTable())
+  {
+    if (spec.kind == ParameterKind::Boolean)
+    {
+      flags.insert(spec.flag);
+    }
+  }
+  return flags;
+}
 
 // Splits arguments into positionals, "--name value" / "--name=value" options and the value-less
 // `flags`.
@@ -128,30 +139,23 @@ Status checkPositionalCount(
   return Status::success();
 }
 
-Status parseColoringName(const std::string& text, std::string& coloring)
+// A Choice value by name; the error lists the names.
+Status parseChoice(const ParameterSpec& spec, const std::string& text, double& index)
 {
-  if (vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(text.c_str()) >= 0)
+  const int found = choiceIndex(spec, text);
+  if (found >= 0)
   {
-    coloring = text;
+    index = found;
     return Status::success();
   }
-  std::string knownNames;
-  for (int algorithm = vtkCoarseGrainedMeshAdaptation::GREEDY;
-       algorithm <= vtkCoarseGrainedMeshAdaptation::RECOLORING; ++algorithm)
+  std::string names;
+  for (const ParameterChoice& choice : spec.choices)
   {
-    knownNames += std::string(knownNames.empty() ? "" : ", ") +
-      vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmToName(algorithm);
+    names += std::string(names.empty() ? "" : ", ") + choice.name;
   }
+  const std::string what = std::string(spec.name) == "Method" ? "method" : "colouring";
   return Status::failure(
-    "unknown colouring '" + text + "' for --coloring (use " + knownNames + ")");
-}
-
-Status parseMethodName(const std::string& text, std::string& method)
-{
-  if (vtkCoarseGrainedMeshAdaptation::MethodFromName(text.c_str()) < 0)
-    return Status::failure("unknown method '" + text + "' for --method (use template, delaunay)");
-  method = text;
-  return Status::success();
+    "unknown " + what + " '" + text + "' for " + spec.flag + " (use " + names + ")");
 }
 
 // Each method's size options are an error with the other method, rather than silently unused.
@@ -159,14 +163,12 @@ Status checkMethodOptions(const std::map<std::string, std::string>& options)
 {
   const auto method = options.find("--method");
   const bool delaunay = method != options.end() && method->second == "delaunay";
-  const std::vector<const char*> templateOptions = { "--max-edge-length", "--edge-length-factor" };
-  const std::vector<const char*> delaunayOptions = { "--max-volume", "--volume-factor",
-    "--radius-edge-ratio" };
-  for (const char* name : delaunay ? templateOptions : delaunayOptions)
+  for (const ParameterSpec& spec : parameterTable())
   {
-    if (options.count(name))
+    const MethodScope other = delaunay ? MethodScope::Template : MethodScope::Delaunay;
+    if (spec.scope == other && options.count(spec.flag))
       return Status::failure(
-        std::string(name) + " needs --method " + (delaunay ? "template" : "delaunay"));
+        std::string(spec.flag) + " needs --method " + (delaunay ? "template" : "delaunay"));
   }
   if (options.count("--max-volume") && options.count("--volume-factor"))
     return Status::failure("give either --max-volume or --volume-factor, not both");
@@ -193,55 +195,60 @@ Status checkRefineOptionCombinations(const std::map<std::string, std::string>& o
   return Status::success();
 }
 
+// Parses one parameter's value by its kind and range and stores it in `options`.
+Status applyParameter(
+  const ParameterSpec& spec, const std::string& value, AdaptationOptions& options)
+{
+  Status status = Status::success();
+  double number = 0;
+  switch (spec.kind)
+  {
+    case ParameterKind::Integer:
+    {
+      int parsed = 0;
+      status = parseInt(value, spec.flag, static_cast<int>(spec.minimum),
+        static_cast<int>(spec.maximum), parsed);
+      number = parsed;
+      break;
+    }
+    case ParameterKind::Count:
+    {
+      long long parsed = 0;
+      status = parseCount(value, spec.flag, static_cast<long long>(spec.minimum), parsed);
+      number = static_cast<double>(parsed);
+      break;
+    }
+    case ParameterKind::Real:
+      status = parseDouble(value, spec.flag, spec.minimum, number);
+      break;
+    case ParameterKind::Boolean: // the flag flips the default
+      number = spec.defaultValue != 0 ? 0 : 1;
+      break;
+    case ParameterKind::Choice:
+      status = parseChoice(spec, value, number);
+      break;
+    case ParameterKind::Text:
+      setTextValue(spec, value, options);
+      return Status::success();
+  }
+  if (status.ok())
+  {
+    setNumericValue(spec, number, options);
+  }
+  return status;
+}
+
 Status applyRefineOption(const std::string& name, const std::string& value, RefineArguments& parsed)
 {
-  if (name == "--partitions")
-    return parseInt(value, name, 1, INT_MAX, parsed.numberOfPartitions);
-  if (name == "--iterations")
-    return parseInt(value, name, 1, INT_MAX, parsed.numberOfIterations);
-  if (name == "--method")
-    return parseMethodName(value, parsed.method);
-  if (name == "--max-edge-length")
-    return parseDouble(value, name, 0.0, parsed.maximumEdgeLength);
-  if (name == "--edge-length-factor")
-    return parseDouble(value, name, 0.0, parsed.edgeLengthFactor);
-  if (name == "--max-volume")
-    return parseDouble(value, name, 0.0, parsed.maximumVolume);
-  if (name == "--volume-factor")
-    return parseDouble(value, name, 0.0, parsed.volumeFactor);
-  if (name == "--radius-edge-ratio")
-    return parseDouble(value, name, 1.0, parsed.radiusEdgeRatio);
-  if (name == "--threads")
-    return parseInt(value, name, 0, INT_MAX, parsed.numberOfThreads);
-  if (name == "--region-array")
-  {
-    parsed.regionArrayName = value;
-    return Status::success();
-  }
-  if (name == "--coloring")
-    return parseColoringName(value, parsed.coloring);
-  if (name == "--partition-by-region")
-  {
-    parsed.partitionByRegion = true;
-    return Status::success();
-  }
-  if (name == "--partitions-per-region")
-    return parseInt(value, name, 1, INT_MAX, parsed.partitionsPerRegion);
-  if (name == "--no-improve")
-  {
-    parsed.improveQuality = false;
-    return Status::success();
-  }
-  if (name == "--improve-passes")
-    return parseInt(value, name, 0, 20, parsed.improvementPasses);
-  if (name == "--max-cells")
-    return parseCount(value, name, 0, parsed.maximumNumberOfCells);
   if (name == "--stats")
   {
     parsed.statsFile = value;
     return Status::success();
   }
-  return Status::failure("unknown option " + name + " (see --help)");
+  const ParameterSpec* spec = findParameterByFlag(name);
+  if (!spec)
+    return Status::failure("unknown option " + name + " (see --help)");
+  return applyParameter(*spec, value, parsed.options);
 }
 
 } // namespace
@@ -250,7 +257,7 @@ Status parseRefineArguments(const std::vector<std::string>& arguments, RefineArg
 {
   std::vector<std::string> positionals;
   std::map<std::string, std::string> options;
-  Status status = splitArguments(arguments, positionals, options, RefineFlags);
+  Status status = splitArguments(arguments, positionals, options, refineFlags());
   if (!status.ok())
     return status;
   status = checkPositionalCount(positionals, 2, "IN and OUT");
@@ -268,6 +275,75 @@ Status parseRefineArguments(const std::vector<std::string>& arguments, RefineArg
       return status;
   }
   return Status::success();
+}
+
+namespace
+{
+
+// `text` wrapped to lines of at most `width` characters, each after `indent` spaces.
+std::string wrapped(const std::string& text, std::size_t indent, std::size_t width)
+{
+  std::istringstream words(text);
+  std::string word, line, result;
+  while (words >> word)
+  {
+    if (!line.empty() && indent + line.size() + 1 + word.size() > width)
+    {
+      result += std::string(indent, ' ') + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty())
+    result += std::string(indent, ' ') + line + "\n";
+  return result;
+}
+
+std::string defaultText(const ParameterSpec& spec)
+{
+  const AdaptationOptions defaults;
+  if (spec.kind == ParameterKind::Boolean || spec.kind == ParameterKind::Text)
+    return "";
+  if (spec.kind == ParameterKind::Choice)
+    return " (default " + textValue(spec, defaults) + ")";
+  std::ostringstream text;
+  text << std::setprecision(15) << numericValue(spec, defaults);
+  return " (default " + text.str() + ")";
+}
+
+} // namespace
+
+std::string refineOptionsHelp()
+{
+  constexpr std::size_t Column = 26;
+  constexpr std::size_t Width = 92;
+  std::string help;
+  for (const ParameterSpec& spec : parameterTable())
+  {
+    std::string head = "  " + std::string(spec.flag);
+    if (spec.valueName[0] != '\0')
+      head += " " + std::string(spec.valueName);
+    std::string text = spec.help;
+    if (spec.scope != MethodScope::Any)
+      text = std::string(spec.scope == MethodScope::Template ? "template" : "delaunay") + ": " + text;
+    if (spec.kind == ParameterKind::Integer || spec.kind == ParameterKind::Real ||
+      spec.kind == ParameterKind::Count)
+      text += ", " + rangeText(spec);
+    text += defaultText(spec);
+    std::string body = wrapped(text, Column, Width);
+    if (head.size() + 1 < Column)
+      body = head + std::string(Column - head.size(), ' ') + body.substr(Column);
+    else
+      body = head + "\n" + body;
+    help += body;
+    for (const ParameterChoice& choice : spec.choices)
+    {
+      std::string name = std::string(Column + 2, ' ') + choice.name;
+      name.resize(std::max(name.size() + 2, Column + 14), ' ');
+      help += name + choice.description + "\n";
+    }
+  }
+  return help;
 }
 
 Status parseGenerateArguments(const std::vector<std::string>& arguments, GenerateArguments& parsed)

@@ -3,6 +3,7 @@
 #ifndef cgmesh_CommandLine_h
 #define cgmesh_CommandLine_h
 
+#include "AdaptationOptions.h"
 #include "Core/Status.h"
 
 #include <string>
@@ -15,23 +16,8 @@ struct RefineArguments
 {
   std::string inputFile;
   std::string outputFile;
-  int numberOfPartitions = 1024;
-  int numberOfIterations = 1;
-  std::string method = "template"; // a vtkCoarseGrainedMeshAdaptation method name
-  double maximumEdgeLength = 0;    // template: used when > 0
-  double edgeLengthFactor = 0.5;   // template: fraction of the input's mean edge length
-  double maximumVolume = 0;        // delaunay: used when > 0
-  double volumeFactor = 0.1;       // delaunay: fraction of the input's mean tet volume
-  double radiusEdgeRatio = 2.0;    // delaunay: TetGen's q
-  int numberOfThreads = 0;         // 0 = all cores
-  std::string regionArrayName;
-  std::string coloring = "greedy-lu";         // a vtkCoarseGrainedMeshAdaptation colouring name
-  bool partitionByRegion = false;             // cut along the regions of regionArrayName
-  int partitionsPerRegion = 1;                // with partitionByRegion
-  bool improveQuality = true;                 // --no-improve turns it off
-  int improvementPasses = 2;                  // --improve-passes, in [0, 20]
-  long long maximumNumberOfCells = 100000000; // --max-cells, 0 = no limit
-  std::string statsFile;                      // JSON statistics, written when not empty
+  AdaptationOptions options; // the parameter table's defaults, overridden by the options given
+  std::string statsFile;     // JSON statistics, written when not empty
 };
 
 struct GenerateArguments
@@ -61,6 +47,9 @@ struct CheckArguments
 
 // True when the arguments ask for help (-h or --help anywhere).
 bool wantsHelp(const std::vector<std::string>& arguments);
+
+// The option lines of `cgmesh refine --help`, from the parameter table.
+std::string refineOptionsHelp();
 
 // Each parser reads the arguments after the command name.
 Status parseRefineArguments(const std::vector<std::string>& arguments, RefineArguments& parsed);

@@ -2,6 +2,7 @@
 #include "Commands.h"
 
 #include "CommandLine.h"
+#include "Core/Stopwatch.h"
 #include "MeshFiles.h"
 #include "RefineReport.h"
 #include "VTKMessages.h"
@@ -12,7 +13,6 @@
 #include "vtkNew.h"
 #include "vtkUnstructuredGrid.h"
 
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <unistd.h>
@@ -25,94 +25,37 @@ namespace
 
 void printRefineUsage()
 {
-  std::cout
-    << "usage: cgmesh refine IN OUT [--partitions N | --partition-by-region\n"
-       "                     [--partitions-per-region N]] [--iterations K]\n"
-       "                     [--method template] [--max-edge-length L | --edge-length-factor F]\n"
-       "                     [--method delaunay [--max-volume V | --volume-factor F]\n"
-       "                      [--radius-edge-ratio Q]] [--threads T]\n"
-       "                     [--no-improve | --improve-passes N] [--max-cells N]\n"
-       "                     [--region-array NAME] [--coloring NAME] [--stats FILE.json]\n"
-       "\n"
-       "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
-       "\n"
-       "  --partitions N          number of METIS partitions (default 1024)\n"
-       "  --partition-by-region   cut along the regions of --region-array instead, each region\n"
-       "                          on its own: no partition holds two regions\n"
-       "  --partitions-per-region N\n"
-       "                          with --partition-by-region: METIS partitions per region\n"
-       "                          (default 1)\n"
-       "  --iterations K          refinement passes (default 1)\n"
-       "  --method NAME           refinement of each partition (default template):\n"
-       "                            template  split long edges by conforming templates\n"
-       "                            delaunay  templates on interfaces, TetGen inside partitions\n"
-       "  --max-edge-length L     template: split edges longer than L (absolute length)\n"
-       "  --edge-length-factor F  template: split edges longer than F x mean input edge length\n"
-       "                          (default 0.5)\n"
-       "  --max-volume V          delaunay: TetGen volume bound (switch a), absolute\n"
-       "  --volume-factor F       delaunay: volume bound V = F x mean input tet volume\n"
-       "                          (default 0.1). Interface edges are split by templates down\n"
-       "                          to (6 sqrt(2) V)^(1/3), the edge of the regular tet of volume\n"
-       "                          V; TetGen (switches r Y q a) refines partition interiors with\n"
-       "                          their boundary kept; a partition where TetGen fails is\n"
-       "                          refined by templates instead (a warning names it)\n"
-       "  --radius-edge-ratio Q   delaunay: TetGen radius-edge quality bound (switch q), >= 1\n"
-       "                          (default 2)\n"
-       "  --no-improve            skip the quality improvement that follows refinement\n"
-       "  --improve-passes N      passes of edge removal, face swaps and Laplacian smoothing\n"
-       "                          per partition in each of the two improvement sweeps, 0..20\n"
-       "                          (default 2). Tets whose mean ratio 12 (3V)^(2/3) / sum of\n"
-       "                          squared edge lengths (1 = regular) is below 0.5 are worked\n"
-       "                          on; a change is kept only when the worst mean ratio rises.\n"
-       "                          Partition-interface, boundary and material-interface\n"
-       "                          vertices stay fixed; a second sweep over box partitions\n"
-       "                          improves the tets around the former partition interfaces\n"
-       "  --threads T             OpenMP threads, 0 = all cores (default 0)\n"
-       "  --max-cells N           size guard (MaximumNumberOfCells): refuse, with an error and\n"
-       "                          no output file, a refinement forecast to produce more than N\n"
-       "                          tetrahedra, before it allocates them; 0 = no limit\n"
-       "                          (default 100000000)\n"
-       "  --region-array NAME     cell array with material/region ids\n"
-       "  --coloring NAME         colouring of the partition graph (default greedy-lu):\n"
-       "                            greedy      first fit, serial, unbalanced\n"
-       "                            greedy-lu   least-used permissible colour, serial, balanced\n"
-       "                            iterative   speculative parallel colouring, conflict rounds\n"
-       "                            recoloring  parallel rebalancing of an initial colouring\n"
-       "  --stats FILE.json       write counts, colour populations, Delaunay figures,\n"
-       "                          improvement counts, the quality summary and phase timings\n"
-       "                          as JSON\n"
-       "\n"
-       "The table and the stats file hold the quality of all tets, of the interior tets and of\n"
-       "the tets near former partition interfaces (cell array NearFormerInterface): tet count,\n"
-       "minimum and 1st percentile of MinDihedralAngle (degrees), 99th percentile of EdgeRatio.\n";
+  std::cout << "usage: cgmesh refine IN OUT [options]\n"
+               "\n"
+               "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
+               "Template: edges longer than the threshold are split by conforming templates.\n"
+               "Delaunay: interface edges by templates, then TetGen (switches r Y q a) refines\n"
+               "partition interiors with their boundary kept; a partition where TetGen fails is\n"
+               "refined by templates instead (a warning names it).\n"
+               "\n"
+            << refineOptionsHelp()
+            << "  --stats FILE.json       write counts, colour populations, Delaunay figures,\n"
+               "                          improvement counts, the quality summary and phase timings\n"
+               "                          as JSON\n"
+               "\n"
+               "Improvement works on tets whose mean ratio 12 (3V)^(2/3) / sum of squared edge\n"
+               "lengths (1 = regular) is below 0.5 and keeps a change only when the worst mean ratio\n"
+               "rises; partition-interface, boundary and material-interface vertices stay fixed.\n"
+               "The table and the stats file hold the quality of all tets, of the interior tets and of\n"
+               "the tets near former partition interfaces (cell array NearFormerInterface): tet count,\n"
+               "minimum and 1st percentile of MinDihedralAngle (degrees), 99th percentile of EdgeRatio.\n";
 }
 
-double secondsSince(std::chrono::steady_clock::time_point start)
+// Every parameter of the table, set on the filter by name.
+void configureFilter(const AdaptationOptions& options, vtkCoarseGrainedMeshAdaptation* filter)
 {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-void configureFilter(const RefineArguments& arguments, vtkCoarseGrainedMeshAdaptation* filter)
-{
-  filter->SetNumberOfPartitions(arguments.numberOfPartitions);
-  filter->SetNumberOfIterations(arguments.numberOfIterations);
-  // The parser accepted only names the filter knows.
-  filter->SetMethod(vtkCoarseGrainedMeshAdaptation::MethodFromName(arguments.method.c_str()));
-  filter->SetMaximumEdgeLength(arguments.maximumEdgeLength);
-  filter->SetEdgeLengthFactor(arguments.edgeLengthFactor);
-  filter->SetMaximumVolume(arguments.maximumVolume);
-  filter->SetVolumeFactor(arguments.volumeFactor);
-  filter->SetRadiusEdgeRatio(arguments.radiusEdgeRatio);
-  filter->SetNumberOfThreads(arguments.numberOfThreads);
-  filter->SetRegionArrayName(
-    arguments.regionArrayName.empty() ? nullptr : arguments.regionArrayName.c_str());
-  filter->SetColoringAlgorithm(
-    vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(arguments.coloring.c_str()));
-  filter->SetPartitionByRegion(arguments.partitionByRegion);
-  filter->SetPartitionsPerRegion(arguments.partitionsPerRegion);
-  filter->SetImproveQuality(arguments.improveQuality);
-  filter->SetNumberOfImprovementPasses(arguments.improvementPasses);
-  filter->SetMaximumNumberOfCells(static_cast<vtkIdType>(arguments.maximumNumberOfCells));
+  for (const ParameterSpec& spec : parameterTable())
+  {
+    if (spec.kind == ParameterKind::Text)
+      filter->SetParameterText(spec.name, textValue(spec, options).c_str());
+    else
+      filter->SetParameterValue(spec.name, numericValue(spec, options));
+  }
 }
 
 // Draws the filter's progress as a bar on stderr; only on a terminal, so logs and pipes stay clean.
@@ -139,14 +82,13 @@ private:
   int LastFilled = -1;
 };
 
-// Runs the filter on `input`; on success `output` holds the refined grid.
-Status refineGrid(
-  const RefineArguments& arguments, vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
+// Runs `filter` on `input`; on success `output` holds the refined grid.
+Status refineGrid(const RefineArguments& arguments, vtkCoarseGrainedMeshAdaptation* filter,
+  vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
 {
-  vtkNew<vtkCoarseGrainedMeshAdaptation> filter;
   vtkNew<VTKMessageCollector> messages;
   messages->watch(filter);
-  configureFilter(arguments, filter);
+  configureFilter(arguments.options, filter);
   if (::isatty(STDERR_FILENO))
   {
     vtkNew<ProgressBar> progressBar;
@@ -201,15 +143,16 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
   if (!status.ok())
     return reportError(status.message());
 
-  auto start = std::chrono::steady_clock::now();
+  Stopwatch stopwatch;
   vtkNew<vtkUnstructuredGrid> input;
   status = readUnstructuredGrid(arguments.inputFile, input);
   if (!status.ok())
     return reportError(status.message());
-  const double readSeconds = secondsSince(start);
+  const double readSeconds = stopwatch.lap();
 
+  vtkNew<vtkCoarseGrainedMeshAdaptation> filter;
   vtkNew<vtkUnstructuredGrid> output;
-  status = refineGrid(arguments, input, output);
+  status = refineGrid(arguments, filter, input, output);
   if (!status.ok())
     return reportError(status.message());
 
@@ -218,19 +161,19 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
   statistics.outputFile = arguments.outputFile;
   statistics.inputPoints = input->GetNumberOfPoints();
   statistics.inputCells = input->GetNumberOfCells();
-  statistics.numberOfIterations = arguments.numberOfIterations;
-  statistics.partitionByRegion = arguments.partitionByRegion;
-  statistics.partitionsPerRegion = arguments.partitionsPerRegion;
-  statistics.improveQuality = arguments.improveQuality;
-  statistics.improvementPasses = arguments.improvementPasses;
-  collectFilterStatistics(output, statistics);
+  statistics.numberOfIterations = arguments.options.numberOfIterations;
+  statistics.partitionByRegion = arguments.options.partitionByRegion;
+  statistics.partitionsPerRegion = arguments.options.partitionsPerRegion;
+  statistics.improveQuality = arguments.options.improveQuality;
+  statistics.improvementPasses = arguments.options.improvementPasses;
+  collectFilterStatistics(filter, output, statistics);
   removeRunDependentFieldData(output);
 
-  start = std::chrono::steady_clock::now();
+  stopwatch.lap();
   status = writeUnstructuredGrid(output, arguments.outputFile);
   if (!status.ok())
     return reportError(status.message());
-  const double writeSeconds = secondsSince(start);
+  const double writeSeconds = stopwatch.lap();
 
   statistics.seconds.emplace_back("read", readSeconds);
   statistics.seconds.emplace_back("write", writeSeconds);

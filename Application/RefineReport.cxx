@@ -1,9 +1,9 @@
 #include "RefineReport.h"
 
+#include "AdaptationDriver.h"
 #include "vtkCellData.h"
+#include "vtkCoarseGrainedMeshAdaptation.h"
 #include "vtkDataArray.h"
-#include "vtkFieldData.h"
-#include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -18,46 +18,6 @@ namespace cgmesh
 
 namespace
 {
-
-// JSON key of each phase and the field-data array the filter stores it in.
-const std::pair<const char*, const char*> FilterPhases[] = { { "partition", "PartitionSeconds" },
-  { "graph", "GraphSeconds" }, { "color", "ColorSeconds" }, { "heal", "HealSeconds" },
-  { "adapt", "AdaptSeconds" }, { "post", "PostSeconds" }, { "improve", "ImproveSeconds" },
-  { "merge", "MergeSeconds" }, { "quality", "QualitySeconds" }, { "total", "TotalSeconds" } };
-
-double fieldValue(vtkFieldData* fieldData, const char* name)
-{
-  vtkDataArray* array = fieldData->GetArray(name);
-  return (array && array->GetNumberOfTuples() > 0) ? array->GetComponent(0, 0) : 0.0;
-}
-
-std::vector<std::int64_t> fieldValues(vtkFieldData* fieldData, const char* name)
-{
-  std::vector<std::int64_t> values;
-  vtkDataArray* array = fieldData->GetArray(name);
-  for (vtkIdType tuple = 0; array && tuple < array->GetNumberOfTuples(); ++tuple)
-  {
-    values.push_back(static_cast<std::int64_t>(array->GetComponent(tuple, 0)));
-  }
-  return values;
-}
-
-std::vector<double> fieldReals(vtkFieldData* fieldData, const char* name)
-{
-  std::vector<double> values;
-  vtkDataArray* array = fieldData->GetArray(name);
-  for (vtkIdType tuple = 0; array && tuple < array->GetNumberOfTuples(); ++tuple)
-  {
-    values.push_back(array->GetComponent(tuple, 0));
-  }
-  return values;
-}
-
-std::string fieldString(vtkFieldData* fieldData, const char* name)
-{
-  auto* array = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray(name));
-  return (array && array->GetNumberOfValues() > 0) ? array->GetValue(0) : std::string();
-}
 
 // "a b c" for the table, "[a, b, c]" for JSON.
 std::string joinValues(const std::vector<std::int64_t>& values, const char* separator)
@@ -239,35 +199,40 @@ std::string jsonString(const std::string& text)
   return escaped.str();
 }
 
-void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& statistics)
+void collectFilterStatistics(
+  vtkCoarseGrainedMeshAdaptation* filter, vtkUnstructuredGrid* output, RefineStatistics& statistics)
 {
-  vtkFieldData* fieldData = output->GetFieldData();
+  const AdaptationSummary& summary = *filter->GetLastSummary();
   statistics.outputPoints = output->GetNumberOfPoints();
   statistics.outputCells = output->GetNumberOfCells();
-  statistics.numberOfColors = static_cast<int>(fieldValue(fieldData, "NumberOfColors"));
-  statistics.numberOfPartitions = static_cast<int>(fieldValue(fieldData, "NumberOfPartitions"));
-  statistics.numberOfThreads = static_cast<int>(fieldValue(fieldData, "NumberOfThreads"));
-  statistics.edgeLengthThreshold = fieldValue(fieldData, "EdgeLengthThreshold");
-  statistics.coloring = fieldString(fieldData, "ColoringAlgorithm");
-  statistics.method = fieldString(fieldData, "Method");
-  statistics.volumeBound = fieldValue(fieldData, "VolumeBound");
-  statistics.delaunayFallbacks =
-    static_cast<std::int64_t>(fieldValue(fieldData, "DelaunayFallbacks"));
-  statistics.fallbackPartitions = fieldValues(fieldData, "FallbackPartitions");
-  statistics.tetgenPoints = static_cast<std::int64_t>(fieldValue(fieldData, "TetGenPoints"));
-  statistics.partitionsPerColor = fieldValues(fieldData, "PartitionsPerColor");
-  statistics.cellsPerColor = fieldValues(fieldData, "CellsPerColor");
-  statistics.colorBalance = fieldValue(fieldData, "ColorBalance");
-  statistics.edgeRemovals = static_cast<std::int64_t>(fieldValue(fieldData, "EdgeRemovals"));
-  statistics.faceSwaps = static_cast<std::int64_t>(fieldValue(fieldData, "FaceSwaps"));
-  statistics.vertexMoves = static_cast<std::int64_t>(fieldValue(fieldData, "VertexMoves"));
-  statistics.partitionTaskSeconds = fieldReals(fieldData, "PartitionTaskSeconds");
-  statistics.colorOfPartition = fieldValues(fieldData, "ColorOfPartition");
+  statistics.numberOfColors = summary.numberOfColors;
+  statistics.numberOfPartitions = summary.plan.partitions;
+  statistics.numberOfThreads = summary.plan.threads;
+  statistics.edgeLengthThreshold = summary.plan.edgeLengthThreshold;
+  statistics.coloring = filter->GetColoringAlgorithmName();
+  statistics.method = filter->GetMethodName();
+  statistics.volumeBound = summary.plan.volumeBound;
+  statistics.delaunayFallbacks = summary.delaunayFallbacks;
+  statistics.fallbackPartitions.assign(
+    summary.fallbackPartitions.begin(), summary.fallbackPartitions.end());
+  statistics.tetgenPoints = summary.tetgenPoints;
+  statistics.partitionsPerColor = summary.partitionsPerColor;
+  statistics.cellsPerColor = summary.cellsPerColor;
+  statistics.colorBalance = summary.colorBalance;
+  statistics.edgeRemovals = summary.edgeRemovals;
+  statistics.faceSwaps = summary.faceSwaps;
+  statistics.vertexMoves = summary.vertexMoves;
+  statistics.partitionTaskSeconds = summary.partitionTaskSeconds;
+  statistics.colorOfPartition.assign(
+    summary.colorOfPartition.begin(), summary.colorOfPartition.end());
   collectQualitySummaries(output, statistics);
-  for (const auto& phase : FilterPhases)
+  for (int phase = 0; phase < static_cast<int>(Phase::Count); ++phase)
   {
-    statistics.seconds.emplace_back(phase.first, fieldValue(fieldData, phase.second));
+    statistics.seconds.emplace_back(
+      phaseName(static_cast<Phase>(phase)), summary.seconds[static_cast<Phase>(phase)]);
   }
+  statistics.seconds.emplace_back("quality", filter->GetLastQualitySeconds());
+  statistics.seconds.emplace_back("total", filter->GetLastTotalSeconds());
 }
 
 void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stream)

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+class vtkCoarseGrainedMeshAdaptation;
 class vtkUnstructuredGrid;
 
 namespace cgmesh
@@ -64,9 +65,10 @@ struct RefineStatistics
 };
 
 // Fills counts, colours, partitions, threads, threshold, colouring, colour populations,
-// improvement counts and phase seconds from the filter output's field data (see
-// vtkCoarseGrainedMeshAdaptation), and the quality summaries from its cell arrays.
-void collectFilterStatistics(vtkUnstructuredGrid* output, RefineStatistics& statistics);
+// improvement counts and phase seconds from the filter's summary of its last (successful) run,
+// and the quality summaries from the output's cell arrays.
+void collectFilterStatistics(
+  vtkCoarseGrainedMeshAdaptation* filter, vtkUnstructuredGrid* output, RefineStatistics& statistics);
 
 void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stream);
 

@@ -1,6 +1,7 @@
 // cgmesh tetgen IN OUT --max-volume V [...]: serial TetGen refining the whole mesh in one call, the
 // baseline the Delaunay method is measured against.
 #include "Commands.h"
+#include "Core/Stopwatch.h"
 
 #include "CommandLine.h"
 #include "MeshFiles.h"
@@ -16,7 +17,6 @@
 #include <tetgen.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -29,12 +29,6 @@ namespace cgmesh
 namespace
 {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 void printTetGenUsage()
 {
@@ -131,7 +125,7 @@ struct TetGenRun
 Status runTetGen(const TetGenArguments& arguments, vtkUnstructuredGrid* input,
   vtkUnstructuredGrid* output, TetGenRun& run)
 {
-  const auto start = Clock::now();
+  const Stopwatch stopwatch;
   TetMesh mesh;
   Status status = convertToTetMesh(input, arguments.regionArrayName, mesh);
   if (!status.ok())
@@ -148,7 +142,7 @@ Status runTetGen(const TetGenArguments& arguments, vtkUnstructuredGrid* input,
   if (!status.ok())
     return status;
   convertToUnstructuredGrid(mesh, output, arguments.regionArrayName);
-  run.tetgenSeconds = secondsSince(start);
+  run.tetgenSeconds = stopwatch.seconds();
   return Status::success();
 }
 
@@ -209,7 +203,7 @@ int runTetGenCommand(const std::vector<std::string>& commandArguments)
   if (!status.ok())
     return reportError(status.message());
 
-  const auto start = Clock::now();
+  const Stopwatch stopwatch;
   vtkNew<vtkUnstructuredGrid> input;
   status = readUnstructuredGrid(arguments.inputFile, input);
   if (!status.ok())
@@ -218,7 +212,7 @@ int runTetGenCommand(const std::vector<std::string>& commandArguments)
   if (nonTetrahedra > 0)
     return reportError(std::to_string(nonTetrahedra) + " cells are not linear tetrahedra");
   TetGenRun run;
-  run.readSeconds = secondsSince(start);
+  run.readSeconds = stopwatch.seconds();
   run.inputPoints = input->GetNumberOfPoints();
   run.inputCells = input->GetNumberOfCells();
   run.switches = tetgenSwitches(arguments);
@@ -229,12 +223,12 @@ int runTetGenCommand(const std::vector<std::string>& commandArguments)
     return reportError(status.message());
   run.qualitySeconds = addTetQualityArrays(output, 0);
 
-  const auto writeStart = Clock::now();
+  const Stopwatch writeStopwatch;
   status = writeUnstructuredGrid(output, arguments.outputFile);
   if (!status.ok())
     return reportError(status.message());
-  run.writeSeconds = secondsSince(writeStart);
-  run.totalSeconds = secondsSince(start);
+  run.writeSeconds = writeStopwatch.seconds();
+  run.totalSeconds = stopwatch.seconds();
 
   printTetGenTable(output, run, std::cout);
   if (!arguments.statsFile.empty())

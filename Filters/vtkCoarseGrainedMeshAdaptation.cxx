@@ -4,6 +4,7 @@
 #include "cgmeshVTKConversion.h"
 
 #include "AdaptationDriver.h"
+#include "Core/Stopwatch.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -23,7 +24,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <chrono>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -35,19 +36,17 @@ vtkStandardNewMacro(vtkCoarseGrainedMeshAdaptation);
 namespace
 {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start)
+// A Choice parameter's name for a value, or nullptr out of range.
+const char* choiceName(const char* parameter, int value)
 {
-  return std::chrono::duration<double>(Clock::now() - start).count();
+  const auto& choices = cgmesh::findParameter(parameter)->choices;
+  return value >= 0 && value < static_cast<int>(choices.size()) ? choices[value].name : nullptr;
 }
 
-// Names of vtkCoarseGrainedMeshAdaptation::ColoringAlgorithms, indexed by value; they are the
-// names the driver's colouring registry knows.
-const char* const ColoringAlgorithmNames[] = { "greedy", "greedy-lu", "iterative", "recoloring" };
-
-// Names of vtkCoarseGrainedMeshAdaptation::Methods, indexed by value.
-const char* const MethodNames[] = { "template", "delaunay" };
+int choiceValue(const char* parameter, const char* name)
+{
+  return name ? cgmesh::choiceIndex(*cgmesh::findParameter(parameter), name) : -1;
+}
 
 // Fallback warnings beyond this many are summed up in one line, so that a mesh on which TetGen
 // fails everywhere does not flood the output window.
@@ -189,15 +188,15 @@ void interpolateIdTypeArrays(vtkPointData* inputPointData,
   }
 }
 
-void addFieldData(const cgmesh::AdaptationResult& result, vtkCoarseGrainedMeshAdaptation* filter,
+void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshAdaptation* filter,
   double qualitySeconds, double totalSeconds, vtkFieldData* fieldData)
 {
   addFieldValue(fieldData, "NumberOfColors", result.numberOfColors);
-  addFieldValue(fieldData, "NumberOfPartitions", result.numberOfPartitions);
-  addFieldValue(fieldData, "NumberOfThreads", result.numberOfThreads);
-  addFieldValue(fieldData, "EdgeLengthThreshold", result.edgeLengthThreshold);
+  addFieldValue(fieldData, "NumberOfPartitions", result.plan.partitions);
+  addFieldValue(fieldData, "NumberOfThreads", result.plan.threads);
+  addFieldValue(fieldData, "EdgeLengthThreshold", result.plan.edgeLengthThreshold);
   addFieldString(fieldData, "Method", filter->GetMethodName());
-  addFieldValue(fieldData, "VolumeBound", result.volumeBound);
+  addFieldValue(fieldData, "VolumeBound", result.plan.volumeBound);
   addFieldValue(fieldData, "DelaunayFallbacks", static_cast<double>(result.delaunayFallbacks));
   addFieldValue(fieldData, "TetGenPoints", static_cast<double>(result.tetgenPoints));
   vtkNew<vtkIntArray> fallbackPartitions; // one tuple per fallback, in refinement order
@@ -229,39 +228,23 @@ void addFieldData(const cgmesh::AdaptationResult& result, vtkCoarseGrainedMeshAd
     colorOfPartition->InsertNextValue(color);
   }
   fieldData->AddArray(colorOfPartition);
-  const cgmesh::PhaseSeconds& seconds = result.seconds;
-  addFieldValue(fieldData, "PartitionSeconds", seconds.partition);
-  addFieldValue(fieldData, "GraphSeconds", seconds.graph);
-  addFieldValue(fieldData, "ColorSeconds", seconds.color);
-  addFieldValue(fieldData, "HealSeconds", seconds.heal);
-  addFieldValue(fieldData, "AdaptSeconds", seconds.adapt);
-  addFieldValue(fieldData, "PostSeconds", seconds.post);
-  addFieldValue(fieldData, "ImproveSeconds", seconds.improve);
-  addFieldValue(fieldData, "MergeSeconds", seconds.merge);
+  // One array per phase ("PrepareSeconds", "PartitionSeconds", ...), then the filter's own.
+  for (int phase = 0; phase < static_cast<int>(cgmesh::Phase::Count); ++phase)
+  {
+    std::string name = cgmesh::phaseName(static_cast<cgmesh::Phase>(phase));
+    name[0] = static_cast<char>(std::toupper(name[0]));
+    addFieldValue(fieldData, (name + "Seconds").c_str(),
+      result.seconds[static_cast<cgmesh::Phase>(phase)]);
+  }
   addFieldValue(fieldData, "QualitySeconds", qualitySeconds);
   addFieldValue(fieldData, "TotalSeconds", totalSeconds);
 }
 
-cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter)
+// The filter's parameters, with the progress and abort hooks of this run.
+cgmesh::AdaptationOptions makeOptions(
+  vtkCoarseGrainedMeshAdaptation* filter, const cgmesh::AdaptationOptions& parameters)
 {
-  cgmesh::AdaptationOptions options;
-  options.numberOfPartitions = filter->GetNumberOfPartitions();
-  options.numberOfIterations = filter->GetNumberOfIterations();
-  options.method = filter->GetMethod() == vtkCoarseGrainedMeshAdaptation::DELAUNAY
-    ? cgmesh::RefinementMethod::Delaunay
-    : cgmesh::RefinementMethod::Template;
-  options.maximumEdgeLength = filter->GetMaximumEdgeLength();
-  options.edgeLengthFactor = filter->GetEdgeLengthFactor();
-  options.maximumVolume = filter->GetMaximumVolume();
-  options.volumeFactor = filter->GetVolumeFactor();
-  options.radiusEdgeRatio = filter->GetRadiusEdgeRatio();
-  options.numberOfThreads = filter->GetNumberOfThreads();
-  options.coloring = filter->GetColoringAlgorithmName();
-  options.partitionByRegion = filter->GetPartitionByRegion();
-  options.partitionsPerRegion = filter->GetPartitionsPerRegion();
-  options.improveQuality = filter->GetImproveQuality();
-  options.improvementPasses = filter->GetNumberOfImprovementPasses();
-  options.maximumNumberOfCells = static_cast<std::int64_t>(filter->GetMaximumNumberOfCells());
+  cgmesh::AdaptationOptions options = parameters;
   // The driver calls both hooks on the calling thread only.
   options.progress = [filter](double fraction, const char*)
   {
@@ -275,18 +258,18 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter)
 }
 
 // Forwards the driver's warnings; fallback warnings beyond the first few are summed up.
-void reportWarnings(vtkCoarseGrainedMeshAdaptation* filter, const cgmesh::AdaptationResult& result)
+void reportWarnings(
+  vtkCoarseGrainedMeshAdaptation* filter, const cgmesh::AdaptationSummary& summary)
 {
   std::size_t fallbackWarnings = 0;
-  for (const std::string& warning : result.warnings)
+  for (const cgmesh::AdaptationWarning& warning : summary.warnings)
   {
-    // The driver words every fallback warning "partition P: Delaunay refinement failed (...".
-    const bool isFallback = warning.find(": Delaunay refinement failed") != std::string::npos;
-    if (isFallback && ++fallbackWarnings > MaximumFallbackWarnings)
+    if (warning.kind == cgmesh::WarningKind::DelaunayFallback &&
+      ++fallbackWarnings > MaximumFallbackWarnings)
     {
       continue;
     }
-    vtkWarningWithObjectMacro(filter, << warning);
+    vtkWarningWithObjectMacro(filter, << warning.text);
   }
   if (fallbackWarnings > MaximumFallbackWarnings)
   {
@@ -319,86 +302,138 @@ void fillOutput(
 
 } // namespace
 
+class vtkCoarseGrainedMeshAdaptation::vtkInternals
+{
+public:
+  cgmesh::AdaptationOptions Parameters; // the table's defaults until set
+  cgmesh::AdaptationSummary LastSummary;
+  double LastQualitySeconds = 0;
+  double LastTotalSeconds = 0;
+  bool HasRun = false;
+};
+
 //------------------------------------------------------------------------------
 vtkCoarseGrainedMeshAdaptation::vtkCoarseGrainedMeshAdaptation()
-  : NumberOfPartitions(1024)
-  , NumberOfIterations(1)
-  , Method(TEMPLATE)
-  , MaximumEdgeLength(0.0)
-  , EdgeLengthFactor(0.5)
-  , MaximumVolume(0.0)
-  , VolumeFactor(0.1)
-  , RadiusEdgeRatio(2.0)
-  , NumberOfThreads(0)
-  , RegionArrayName(nullptr)
-  , ColoringAlgorithm(GREEDY_LEAST_USED)
-  , PartitionByRegion(false)
-  , PartitionsPerRegion(1)
-  , ImproveQuality(true)
-  , NumberOfImprovementPasses(2)
-  , MaximumNumberOfCells(100000000)
+  : Internals(new vtkInternals)
 {
 }
 
 //------------------------------------------------------------------------------
 vtkCoarseGrainedMeshAdaptation::~vtkCoarseGrainedMeshAdaptation()
 {
-  this->SetRegionArrayName(nullptr);
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+void vtkCoarseGrainedMeshAdaptation::SetParameterValue(const char* name, double value)
+{
+  const cgmesh::ParameterSpec* spec = name ? cgmesh::findParameter(name) : nullptr;
+  if (!spec || spec->kind == cgmesh::ParameterKind::Text)
+  {
+    vtkErrorMacro(<< "No numeric parameter named " << (name ? name : "(null)") << ".");
+    return;
+  }
+  if (cgmesh::setNumericValue(*spec, value, this->Internals->Parameters))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkCoarseGrainedMeshAdaptation::GetParameterValue(const char* name)
+{
+  const cgmesh::ParameterSpec* spec = name ? cgmesh::findParameter(name) : nullptr;
+  if (!spec || spec->kind == cgmesh::ParameterKind::Text)
+  {
+    vtkErrorMacro(<< "No numeric parameter named " << (name ? name : "(null)") << ".");
+    return 0;
+  }
+  return cgmesh::numericValue(*spec, this->Internals->Parameters);
+}
+
+//------------------------------------------------------------------------------
+void vtkCoarseGrainedMeshAdaptation::SetParameterText(const char* name, const char* value)
+{
+  const cgmesh::ParameterSpec* spec = name ? cgmesh::findParameter(name) : nullptr;
+  if (!spec || spec->kind != cgmesh::ParameterKind::Text)
+  {
+    vtkErrorMacro(<< "No text parameter named " << (name ? name : "(null)") << ".");
+    return;
+  }
+  if (cgmesh::setTextValue(*spec, value ? value : "", this->Internals->Parameters))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkCoarseGrainedMeshAdaptation::GetParameterText(const char* name)
+{
+  const cgmesh::ParameterSpec* spec = name ? cgmesh::findParameter(name) : nullptr;
+  const auto* field = spec ? std::get_if<std::string cgmesh::AdaptationOptions::*>(&spec->field)
+                           : nullptr;
+  if (!spec || spec->kind != cgmesh::ParameterKind::Text || !field)
+  {
+    vtkErrorMacro(<< "No text parameter named " << (name ? name : "(null)") << ".");
+    return nullptr;
+  }
+  // An empty text reads as unset, as vtkGetStringMacro's nullptr.
+  const std::string& value = this->Internals->Parameters.**field;
+  return value.empty() ? nullptr : value.c_str();
+}
+
+//------------------------------------------------------------------------------
+const cgmesh::AdaptationSummary* vtkCoarseGrainedMeshAdaptation::GetLastSummary() const
+{
+  return this->Internals->HasRun ? &this->Internals->LastSummary : nullptr;
+}
+
+//------------------------------------------------------------------------------
+double vtkCoarseGrainedMeshAdaptation::GetLastQualitySeconds() const
+{
+  return this->Internals->LastQualitySeconds;
+}
+
+//------------------------------------------------------------------------------
+double vtkCoarseGrainedMeshAdaptation::GetLastTotalSeconds() const
+{
+  return this->Internals->LastTotalSeconds;
 }
 
 //------------------------------------------------------------------------------
 const char* vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmToName(int algorithm)
 {
-  return (algorithm >= GREEDY && algorithm <= RECOLORING) ? ColoringAlgorithmNames[algorithm]
-                                                          : nullptr;
+  return choiceName("ColoringAlgorithm", algorithm);
 }
 
 //------------------------------------------------------------------------------
 int vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(const char* name)
 {
-  for (int algorithm = GREEDY; name && algorithm <= RECOLORING; ++algorithm)
-  {
-    if (std::strcmp(name, ColoringAlgorithmNames[algorithm]) == 0)
-    {
-      return algorithm;
-    }
-  }
-  return -1;
+  return choiceValue("ColoringAlgorithm", name);
 }
 
 //------------------------------------------------------------------------------
 const char* vtkCoarseGrainedMeshAdaptation::MethodToName(int method)
 {
-  return (method >= TEMPLATE && method <= DELAUNAY) ? MethodNames[method] : nullptr;
+  return choiceName("Method", method);
 }
 
 //------------------------------------------------------------------------------
 int vtkCoarseGrainedMeshAdaptation::MethodFromName(const char* name)
 {
-  for (int method = TEMPLATE; name && method <= DELAUNAY; ++method)
-  {
-    if (std::strcmp(name, MethodNames[method]) == 0)
-    {
-      return method;
-    }
-  }
-  return -1;
+  return choiceValue("Method", name);
 }
 
 //------------------------------------------------------------------------------
 std::string vtkCoarseGrainedMeshAdaptation::ResolveRegionArrayName(vtkUnstructuredGrid* input) const
 {
-  if (!this->RegionArrayName || this->RegionArrayName[0] == '\0')
-  {
-    return std::string();
-  }
+  const std::string& name = this->Internals->Parameters.regionArrayName;
   // "None" is ParaView's "no array" entry, unless the input really has an array of that name.
-  if (std::strcmp(this->RegionArrayName, "None") == 0 &&
-    !input->GetCellData()->GetAbstractArray("None"))
+  if (name == "None" && !input->GetCellData()->GetAbstractArray("None"))
   {
     return std::string();
   }
-  return this->RegionArrayName;
+  return name;
 }
 
 //------------------------------------------------------------------------------
@@ -412,7 +447,7 @@ bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
                   << " cells are of other types. Apply ParaView's Tetrahedralize filter first.");
     return false;
   }
-  if (this->PartitionByRegion && this->ResolveRegionArrayName(input).empty())
+  if (this->GetPartitionByRegion() && this->ResolveRegionArrayName(input).empty())
   {
     vtkErrorMacro(<< "PartitionByRegion needs a region array: set RegionArrayName to the cell "
                      "array of material/region ids to cut along.");
@@ -425,7 +460,8 @@ bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
 int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  const auto start = Clock::now();
+  const cgmesh::Stopwatch stopwatch;
+  this->Internals->HasRun = false;
   vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   output->Initialize();
@@ -449,14 +485,17 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   }
 
   cgmesh::AdaptationResult result;
-  status = cgmesh::adaptMesh(inputMesh, makeOptions(this), result);
-  reportWarnings(this, result);
+  status = cgmesh::adaptMesh(inputMesh, makeOptions(this, this->Internals->Parameters), result);
+  this->Internals->LastSummary = result.summary;
+  this->Internals->LastQualitySeconds = 0;
+  this->Internals->HasRun = true;
+  reportWarnings(this, result.summary);
   if (!status.ok())
   {
     vtkErrorMacro(<< "Mesh adaptation failed: " << status.message());
     return 0;
   }
-  if (result.aborted)
+  if (result.summary.aborted)
   {
     vtkWarningMacro(<< "Mesh adaptation was aborted; the output is empty.");
     return 1;
@@ -464,8 +503,11 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
 
   fillOutput(input, result, output);
   this->UpdateProgress(0.9);
-  const double qualitySeconds = cgmesh::addTetQualityArrays(output, result.numberOfThreads);
-  addFieldData(result, this, qualitySeconds, secondsSince(start), output->GetFieldData());
+  const double qualitySeconds = cgmesh::addTetQualityArrays(output, result.summary.plan.threads);
+  this->Internals->LastQualitySeconds = qualitySeconds;
+  this->Internals->LastTotalSeconds = stopwatch.seconds();
+  addFieldData(result.summary, this, qualitySeconds, this->Internals->LastTotalSeconds,
+    output->GetFieldData());
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -474,23 +516,17 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
 void vtkCoarseGrainedMeshAdaptation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "NumberOfPartitions: " << this->NumberOfPartitions << "\n";
-  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
-  os << indent << "Method: " << this->Method << " (" << this->GetMethodName() << ")\n";
-  os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
-  os << indent << "EdgeLengthFactor: " << this->EdgeLengthFactor << "\n";
-  os << indent << "MaximumVolume: " << this->MaximumVolume << "\n";
-  os << indent << "VolumeFactor: " << this->VolumeFactor << "\n";
-  os << indent << "RadiusEdgeRatio: " << this->RadiusEdgeRatio << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
-  os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)")
-     << "\n";
-  os << indent << "ColoringAlgorithm: " << this->ColoringAlgorithm << " ("
-     << this->GetColoringAlgorithmName() << ")\n";
-  os << indent << "PartitionByRegion: " << (this->PartitionByRegion ? "on" : "off") << "\n";
-  os << indent << "PartitionsPerRegion: " << this->PartitionsPerRegion << "\n";
-  os << indent << "ImproveQuality: " << (this->ImproveQuality ? "on" : "off") << "\n";
-  os << indent << "NumberOfImprovementPasses: " << this->NumberOfImprovementPasses << "\n";
-  os << indent << "MaximumNumberOfCells: " << this->MaximumNumberOfCells
-     << (this->MaximumNumberOfCells == 0 ? " (no limit)" : "") << "\n";
+  for (const cgmesh::ParameterSpec& spec : cgmesh::parameterTable())
+  {
+    os << indent << spec.name << ": ";
+    if (spec.kind == cgmesh::ParameterKind::Text || spec.kind == cgmesh::ParameterKind::Choice)
+    {
+      const std::string text = cgmesh::textValue(spec, this->Internals->Parameters);
+      os << (text.empty() ? "(none)" : text) << "\n";
+    }
+    else
+    {
+      os << cgmesh::numericValue(spec, this->Internals->Parameters) << "\n";
+    }
+  }
 }

@@ -51,6 +51,27 @@
 #include <string> // for std::string
 
 class vtkUnstructuredGrid;
+namespace cgmesh
+{
+struct AdaptationSummary;
+}
+
+// A parameter's typed setter and getter, stored through Set/GetParameterValue.
+#define cgmeshParameterMacro(name, type)                                                           \
+  virtual void Set##name(type value)                                                               \
+  {                                                                                                \
+    this->SetParameterValue(#name, static_cast<double>(value));                                    \
+  }                                                                                                \
+  virtual type Get##name() { return static_cast<type>(this->GetParameterValue(#name)); }
+
+#define cgmeshBooleanParameterMacro(name)                                                          \
+  cgmeshParameterMacro(name, bool);                                                                \
+  virtual void name##On() { this->Set##name(true); }                                               \
+  virtual void name##Off() { this->Set##name(false); }
+
+#define cgmeshTextParameterMacro(name)                                                             \
+  virtual void Set##name(const char* value) { this->SetParameterText(#name, value); }              \
+  virtual const char* Get##name() { return this->GetParameterText(#name); }
 
 class CGMESHFILTERS_EXPORT vtkCoarseGrainedMeshAdaptation : public vtkUnstructuredGridAlgorithm
 {
@@ -61,44 +82,82 @@ public:
 
   ///@{
   /**
-   * Number of METIS partitions; reduced (with a warning) when the mesh is too small. Default 1024.
+   * The parameters. Each one's range, default and meaning are in the parameter table
+   * (Filters/Driver/AdaptationOptions.h), which also gives the command line's options and --help;
+   * out-of-range values are clamped to the range.
+   *
+   * NumberOfPartitions (default 1024): METIS partitions, reduced with a warning for a smaller mesh.
+   * RegionArrayName (default none): numeric cell array of material/region ids; unset, empty or
+   * "None" (ParaView's "no array" entry) means one region, unless the input has a cell array
+   * called "None". Any other name that is not a cell array of the input is an error.
+   * PartitionByRegion (off) and PartitionsPerRegion (1): cut along the regions instead of METIS on
+   * the whole mesh (needs RegionArrayName).
+   * ColoringAlgorithm (GREEDY_LEAST_USED), Method (TEMPLATE), NumberOfIterations (1).
+   * Template: MaximumEdgeLength (0: unused) or EdgeLengthFactor (0.5).
+   * Delaunay: MaximumVolume (0: unused) or VolumeFactor (0.1), RadiusEdgeRatio (2, at least 1).
+   * ImproveQuality (on) and NumberOfImprovementPasses (2, in [0, 20]).
+   * NumberOfThreads (0: all cores; the output does not depend on it).
+   * MaximumNumberOfCells (100000000; 0: no limit): the size guard.
    */
-  vtkSetClampMacro(NumberOfPartitions, int, 1, VTK_INT_MAX);
-  vtkGetMacro(NumberOfPartitions, int);
+  cgmeshParameterMacro(NumberOfPartitions, int);
+  cgmeshTextParameterMacro(RegionArrayName);
+  cgmeshBooleanParameterMacro(PartitionByRegion);
+  cgmeshParameterMacro(PartitionsPerRegion, int);
+  cgmeshParameterMacro(ColoringAlgorithm, int);
+  cgmeshParameterMacro(Method, int);
+  cgmeshParameterMacro(NumberOfIterations, int);
+  cgmeshParameterMacro(MaximumEdgeLength, double);
+  cgmeshParameterMacro(EdgeLengthFactor, double);
+  cgmeshParameterMacro(MaximumVolume, double);
+  cgmeshParameterMacro(VolumeFactor, double);
+  cgmeshParameterMacro(RadiusEdgeRatio, double);
+  cgmeshBooleanParameterMacro(ImproveQuality);
+  cgmeshParameterMacro(NumberOfImprovementPasses, int);
+  cgmeshParameterMacro(NumberOfThreads, int);
+  cgmeshParameterMacro(MaximumNumberOfCells, vtkIdType);
   ///@}
 
   ///@{
   /**
-   * Number of refinement passes over all colours. Default 1.
+   * Any parameter by its property name (as in the table). A numeric parameter is clamped to its
+   * range; a Choice (Method, ColoringAlgorithm) is its index, a Boolean 0 or 1. Setting an unknown
+   * name, or a number to RegionArrayName, is an error and changes nothing.
    */
-  vtkSetClampMacro(NumberOfIterations, int, 1, VTK_INT_MAX);
-  vtkGetMacro(NumberOfIterations, int);
+  void SetParameterValue(const char* name, double value);
+  double GetParameterValue(const char* name);
+  void SetParameterText(const char* name, const char* value);
+  const char* GetParameterText(const char* name);
   ///@}
 
+#if !defined(__VTK_WRAP__)
+  ///@{
   /**
-   * Serial refinement kernels run on the partitions.
+   * The last run's summary for C++ front ends: the resolved plan, counts, typed warnings and the
+   * seconds per phase (AdaptationDriver.h), the seconds the quality arrays took and the whole
+   * run's. The summary is nullptr before a run and after a run that stopped before refining.
+   */
+  const cgmesh::AdaptationSummary* GetLastSummary() const;
+  double GetLastQualitySeconds() const;
+  double GetLastTotalSeconds() const;
+  ///@}
+#endif
+
+  /**
+   * Serial refinement kernels run on the partitions (values of Method).
    */
   enum Methods
   {
     TEMPLATE = 0, // split long edges by conforming templates
     DELAUNAY = 1  // templates on interfaces, TetGen inside partitions
   };
-
-  ///@{
-  /**
-   * Refinement kernel, one of Methods. Default TEMPLATE.
-   */
-  vtkSetClampMacro(Method, int, TEMPLATE, DELAUNAY);
-  vtkGetMacro(Method, int);
   void SetMethodToTemplate() { this->SetMethod(TEMPLATE); }
   void SetMethodToDelaunay() { this->SetMethod(DELAUNAY); }
-  ///@}
 
   /**
    * Name of the current method: "template" or "delaunay" (the names of the command line's --method
    * option).
    */
-  const char* GetMethodName() { return MethodToName(this->Method); }
+  const char* GetMethodName() { return MethodToName(this->GetMethod()); }
 
   ///@{
   /**
@@ -109,93 +168,12 @@ public:
   static int MethodFromName(const char* name);
   ///@}
 
-  ///@{
   /**
-   * Template: edges longer than this absolute length are split. Not used when not positive (default
-   * 0).
-   */
-  vtkSetMacro(MaximumEdgeLength, double);
-  vtkGetMacro(MaximumEdgeLength, double);
-  ///@}
-
-  ///@{
-  /**
-   * Template: split threshold as a fraction of the input's mean edge length, used when
-   * MaximumEdgeLength is not positive. Default 0.5.
-   */
-  vtkSetClampMacro(EdgeLengthFactor, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(EdgeLengthFactor, double);
-  ///@}
-
-  ///@{
-  /**
-   * Delaunay: TetGen's absolute volume bound (switch a). Not used when not positive (default 0).
-   */
-  vtkSetMacro(MaximumVolume, double);
-  vtkGetMacro(MaximumVolume, double);
-  ///@}
-
-  ///@{
-  /**
-   * Delaunay: volume bound as a fraction of the input's mean tet volume, used when MaximumVolume
-   * is not positive. Default 0.1.
-   */
-  vtkSetClampMacro(VolumeFactor, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(VolumeFactor, double);
-  ///@}
-
-  ///@{
-  /**
-   * Delaunay: TetGen's radius-edge ratio bound (switch q); smaller values ask for better tets and
-   * more points. Clamped to at least 1. Default 2.
-   */
-  vtkSetClampMacro(RadiusEdgeRatio, double, 1.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(RadiusEdgeRatio, double);
-  ///@}
-
-  ///@{
-  /**
-   * Improve the tets after refinement (edge removal, face swaps, guarded smoothing; see the class
-   * description), keeping partition-interface, domain-boundary and material-interface vertices
-   * fixed. Default on.
-   */
-  vtkSetMacro(ImproveQuality, bool);
-  vtkGetMacro(ImproveQuality, bool);
-  vtkBooleanMacro(ImproveQuality, bool);
-  ///@}
-
-  ///@{
-  /**
-   * With ImproveQuality: sweeps of edge removal, face swaps and smoothing per partition, in each
-   * of the two improvement sweeps. Clamped to [0, 20]. Default 2.
-   */
-  vtkSetClampMacro(NumberOfImprovementPasses, int, 0, 20);
-  vtkGetMacro(NumberOfImprovementPasses, int);
-  ///@}
-
-  ///@{
-  /**
-   * Size guard: a refinement iteration forecast to produce more tetrahedra than this is refused
-   * with an error (and an empty output) before anything large is allocated. 0 means no limit.
-   * Default 100000000.
-   */
-  vtkSetClampMacro(MaximumNumberOfCells, vtkIdType, 0, VTK_ID_MAX);
-  vtkGetMacro(MaximumNumberOfCells, vtkIdType);
-  ///@}
-
-  ///@{
-  /**
-   * Number of OpenMP threads; 0 (default) uses all cores. The output does not depend on it.
-   */
-  vtkSetClampMacro(NumberOfThreads, int, 0, VTK_INT_MAX);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
-  /**
-   * Colourings of the partition graph. Greedy (first fit) is unbalanced; Greedy-LU (least-used
-   * permissible colour) balances the colour sets; Iterative (speculative parallel colouring with
-   * conflict rounds) and Recoloring (parallel rebalancing of an initial colouring) use the
-   * threads. Every algorithm gives the same colours for any number of threads.
+   * Colourings of the partition graph (values of ColoringAlgorithm). Greedy (first fit) is
+   * unbalanced; Greedy-LU (least-used permissible colour) balances the colour sets; Iterative
+   * (speculative parallel colouring with conflict rounds) and Recoloring (parallel rebalancing of
+   * an initial colouring) use the threads. Every algorithm gives the same colours for any number
+   * of threads.
    */
   enum ColoringAlgorithms
   {
@@ -204,18 +182,10 @@ public:
     ITERATIVE = 2,
     RECOLORING = 3
   };
-
-  ///@{
-  /**
-   * Colouring of the partition graph, one of ColoringAlgorithms. Default GREEDY_LEAST_USED.
-   */
-  vtkSetClampMacro(ColoringAlgorithm, int, GREEDY, RECOLORING);
-  vtkGetMacro(ColoringAlgorithm, int);
   void SetColoringAlgorithmToGreedy() { this->SetColoringAlgorithm(GREEDY); }
   void SetColoringAlgorithmToGreedyLeastUsed() { this->SetColoringAlgorithm(GREEDY_LEAST_USED); }
   void SetColoringAlgorithmToIterative() { this->SetColoringAlgorithm(ITERATIVE); }
   void SetColoringAlgorithmToRecoloring() { this->SetColoringAlgorithm(RECOLORING); }
-  ///@}
 
   /**
    * Name of the current colouring: "greedy", "greedy-lu", "iterative" or "recoloring" (the names
@@ -223,7 +193,7 @@ public:
    */
   const char* GetColoringAlgorithmName()
   {
-    return ColoringAlgorithmToName(this->ColoringAlgorithm);
+    return ColoringAlgorithmToName(this->GetColoringAlgorithm());
   }
 
   ///@{
@@ -233,36 +203,6 @@ public:
    */
   static const char* ColoringAlgorithmToName(int algorithm);
   static int ColoringAlgorithmFromName(const char* name);
-  ///@}
-
-  ///@{
-  /**
-   * Cut the mesh along the regions of RegionArrayName instead of METIS on the whole mesh: each
-   * region becomes PartitionsPerRegion partitions, and NumberOfPartitions is not used. Needs
-   * RegionArrayName (an error otherwise). Default off.
-   */
-  vtkSetMacro(PartitionByRegion, bool);
-  vtkGetMacro(PartitionByRegion, bool);
-  vtkBooleanMacro(PartitionByRegion, bool);
-  ///@}
-
-  ///@{
-  /**
-   * With PartitionByRegion: the number of METIS partitions each region is cut into. Default 1.
-   */
-  vtkSetClampMacro(PartitionsPerRegion, int, 1, VTK_INT_MAX);
-  vtkGetMacro(PartitionsPerRegion, int);
-  ///@}
-
-  ///@{
-  /**
-   * Optional name of a numeric cell array holding material/region ids (converted to int). Unset,
-   * empty or "None" (default; ParaView's "no array" choice) means a single region, unless the input
-   * really has a cell array called "None". Any other name that is not a cell array of the input is
-   * an error.
-   */
-  vtkSetStringMacro(RegionArrayName);
-  vtkGetStringMacro(RegionArrayName);
   ///@}
 
 protected:
@@ -277,22 +217,9 @@ protected:
   // PartitionByRegion has a region array to cut along.
   bool CheckInput(vtkUnstructuredGrid* input);
 
-  int NumberOfPartitions;
-  int NumberOfIterations;
-  int Method;
-  double MaximumEdgeLength;
-  double EdgeLengthFactor;
-  double MaximumVolume;
-  double VolumeFactor;
-  double RadiusEdgeRatio;
-  int NumberOfThreads;
-  char* RegionArrayName;
-  int ColoringAlgorithm;
-  bool PartitionByRegion;
-  int PartitionsPerRegion;
-  bool ImproveQuality;
-  int NumberOfImprovementPasses;
-  vtkIdType MaximumNumberOfCells;
+  // The parameters' values, kept as the driver's options.
+  class vtkInternals;
+  vtkInternals* Internals;
 
 private:
   vtkCoarseGrainedMeshAdaptation(const vtkCoarseGrainedMeshAdaptation&) = delete;

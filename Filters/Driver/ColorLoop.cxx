@@ -4,20 +4,14 @@
 #include "ParallelFor.h"
 #include "Coloring/PartitionColoring.h"
 
+#include "Core/Stopwatch.h"
+
 #include <algorithm>
-#include <chrono>
 
 namespace cgmesh
 {
 namespace
 {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 std::vector<std::vector<int>> partitionsByColor(
   const std::vector<int>& colorOfPartition, int colors)
@@ -51,7 +45,7 @@ TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& stat
   const EdgeMidpointMap& received)
 {
   TaskReport report;
-  const auto start = Clock::now();
+  const Stopwatch stopwatch;
   PartitionRefinement& refinement = iteration.refinements[partition];
   if (iteration.setup.method == RefinementMethod::Template)
   {
@@ -67,34 +61,34 @@ TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& stat
     report.status = refinePartitionDelaunay(state.partitions[partition], iteration.refinement,
       received, parameters, iteration.setup.runTetGen, refinement, report.delaunay);
   }
-  report.seconds = secondsSince(start);
+  report.seconds = stopwatch.seconds();
   return report;
 }
 
 void recordReports(const std::vector<int>& members, const std::vector<TaskReport>& reports,
-  int iteration, AdaptationResult& result)
+  int iteration, AdaptationSummary& summary)
 {
+  const std::size_t partitions = summary.plan.partitions;
   for (std::size_t i = 0; i < members.size(); ++i)
   {
     const TaskReport& report = reports[i];
-    result.partitionTaskSeconds[iteration * result.numberOfPartitions + members[i]] +=
-      report.seconds;
-    result.tetgenPoints += report.delaunay.tetgenPoints;
+    summary.partitionTaskSeconds[iteration * partitions + members[i]] += report.seconds;
+    summary.tetgenPoints += report.delaunay.tetgenPoints;
     if (report.delaunay.fellBack)
     {
-      ++result.delaunayFallbacks;
-      result.fallbackPartitions.push_back(members[i]);
-      result.warnings.push_back("partition " + std::to_string(members[i]) +
-        ": Delaunay refinement failed (" + report.delaunay.reason +
-        "); refined by templates instead");
+      ++summary.delaunayFallbacks;
+      summary.fallbackPartitions.push_back(members[i]);
+      summary.warnings.push_back({ WarningKind::DelaunayFallback, members[i],
+        "partition " + std::to_string(members[i]) + ": Delaunay refinement failed (" +
+          report.delaunay.reason + "); refined by templates instead" });
     }
   }
 }
 
 // Gives the colour's new points global ids: prefix sums in partition order (the same for any
 // thread count), then each partition rewrites its own references in parallel.
-Status numberNewPoints(IterationContext& iteration, const std::vector<int>& members,
-  AdaptationState& state, AdaptationResult& result)
+Status numberNewPoints(
+  IterationContext& iteration, const std::vector<int>& members, AdaptationState& state)
 {
   std::vector<PointId> firstId(members.size());
   PointId next = static_cast<PointId>(state.coordinates.size() / 3);
@@ -119,8 +113,6 @@ Status numberNewPoints(IterationContext& iteration, const std::vector<int>& memb
     state.movedPoints.insert(
       state.movedPoints.end(), refinement.movedPoints.begin(), refinement.movedPoints.end());
     refinement.movedPoints.clear();
-    result.healedSplits += refinement.healedSplits;
-    result.createdSplits += refinement.createdSplits;
     refinement.newCoordinates = std::vector<double>();
     refinement.newPointSources = std::vector<PointSource>();
   }
@@ -129,14 +121,14 @@ Status numberNewPoints(IterationContext& iteration, const std::vector<int>& memb
 
 // The heal and adapt loops of one colour.
 Status refineMembers(IterationContext& iteration, const std::vector<int>& members, int color,
-  int iterationIndex, AdaptationState& state, AdaptationResult& result)
+  int iterationIndex, AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
 {
   const ColorLoopSetup& setup = iteration.setup;
   const auto& colorOf = *setup.colorOfPartition;
   const std::int64_t count = static_cast<std::int64_t>(members.size());
   std::vector<EdgeMidpointMap> received(members.size());
 
-  auto start = Clock::now();
+  reporter.enter(Phase::Heal);
   Status status = runParallel(setup.threads, count,
     [&](std::int64_t i)
     {
@@ -152,13 +144,12 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
       }
       collectReceivedSplits(processedNeighbours, received[i]);
     });
-  result.seconds.heal += secondsSince(start);
   if (!status.ok())
   {
     return status;
   }
 
-  start = Clock::now();
+  reporter.enter(Phase::Adapt);
   std::vector<TaskReport> reports(members.size());
   status = runParallel(setup.threads, count,
     [&](std::int64_t i)
@@ -166,8 +157,7 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
       reports[i] = refineOnePartition(iteration, state, members[i], received[i]);
       received[i] = EdgeMidpointMap();
     });
-  result.seconds.adapt += secondsSince(start);
-  recordReports(members, reports, iterationIndex, result);
+  recordReports(members, reports, iterationIndex, summary);
   for (const TaskReport& report : reports)
   {
     if (!report.status.ok())
@@ -179,7 +169,7 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
 }
 
 Status improveMembers(IterationContext& iteration, const std::vector<int>& members,
-  AdaptationState& state, AdaptationResult& result)
+  AdaptationState& state, AdaptationSummary& summary)
 {
   std::vector<ImprovementStatistics> statistics(members.size());
   std::vector<Status> outcomes(members.size(), Status::success());
@@ -194,10 +184,10 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
     });
   for (std::size_t i = 0; i < members.size(); ++i)
   {
-    result.edgeRemovals += statistics[i].edgeRemovals;
-    result.faceSwaps += statistics[i].faceSwaps;
-    result.vertexMoves += statistics[i].vertexMoves;
-    result.poorTets += statistics[i].poorTets;
+    summary.edgeRemovals += statistics[i].edgeRemovals;
+    summary.faceSwaps += statistics[i].faceSwaps;
+    summary.vertexMoves += statistics[i].vertexMoves;
+    summary.poorTets += statistics[i].poorTets;
     if (!outcomes[i].ok())
     {
       return outcomes[i];
@@ -207,13 +197,13 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
 }
 
 Status processColor(IterationContext& iteration, const std::vector<int>& members, int color,
-  int iterationIndex, AdaptationState& state, AdaptationResult& result)
+  int iterationIndex, AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
 {
   const ColorLoopSetup& setup = iteration.setup;
   Status status = Status::success();
   if (setup.refine)
   {
-    status = refineMembers(iteration, members, color, iterationIndex, state, result);
+    status = refineMembers(iteration, members, color, iterationIndex, state, summary, reporter);
     if (!status.ok())
     {
       return status;
@@ -222,19 +212,17 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
 
   if (setup.improve)
   {
-    const auto start = Clock::now();
-    status = improveMembers(iteration, members, state, result);
-    result.seconds.improve += secondsSince(start);
+    reporter.enter(Phase::Improve);
+    status = improveMembers(iteration, members, state, summary);
     if (!status.ok())
     {
       return status;
     }
   }
 
-  const auto start = Clock::now();
-  status = numberNewPoints(iteration, members, state, result);
-  result.seconds.post += secondsSince(start);
-  return status;
+  // A sweep's numbering only gathers moved points: it counts as improvement.
+  reporter.enter(setup.refine ? Phase::Post : Phase::Improve);
+  return numberNewPoints(iteration, members, state);
 }
 
 // Refuses an iteration whose forecast size exceeds the guard, before it allocates anything big.
@@ -275,7 +263,7 @@ Status checkForecastSize(
   }
   if (status.ok() && total > setup.maximumNumberOfCells)
   {
-    return Status::failure("refining would produce about " + std::to_string(total) +
+    return Status::failure(ErrorKind::SizeLimit, "refining would produce about " + std::to_string(total) +
       " tetrahedra, more than the limit of " + std::to_string(setup.maximumNumberOfCells) +
       " (MaximumNumberOfCells); raise the limit or refine less");
   }
@@ -290,35 +278,36 @@ Status colorPartitions(const PartitionGraph& graph, const std::string& coloringN
   const auto coloring = makeColoring(coloringName);
   if (!coloring)
   {
-    return Status::failure("unknown colouring '" + coloringName + "'");
+    return Status::failure(ErrorKind::InvalidOption, "unknown colouring '" + coloringName + "'");
   }
   const ParallelFor parallelFor =
     [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
   {
-    runParallel(threads, count, body);
+    return runParallel(threads, count, body);
   };
   Status status = coloring->color(graph, parallelFor, colorOfPartition);
   if (status.ok() && !isProperColoring(graph, colorOfPartition))
   {
-    return Status::failure(std::string("colouring '") + coloring->name() +
+    return Status::failure(ErrorKind::Internal, std::string("colouring '") + coloring->name() +
       "' gave two adjacent partitions the same colour");
   }
   return status;
 }
 
 Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& options,
-  AdaptationState& state, AdaptationResult& result)
+  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
 {
   const auto members = partitionsByColor(*setup.colorOfPartition, setup.numberOfColors);
   const int steps = setup.numberOfIterations * setup.numberOfColors;
   if (setup.refine)
   {
-    result.partitionTaskSeconds.assign(
-      static_cast<std::size_t>(setup.numberOfIterations) * result.numberOfPartitions, 0.0);
+    summary.partitionTaskSeconds.assign(
+      static_cast<std::size_t>(setup.numberOfIterations) * summary.plan.partitions, 0.0);
   }
   for (int iteration = 0; iteration < setup.numberOfIterations; ++iteration)
   {
     // Recomputed per iteration: the last one's splits made new interface points.
+    reporter.enter(setup.refine ? Phase::Heal : Phase::Improve);
     const std::vector<char> interfaceVertex =
       findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
     IterationContext context{ setup, options, RefinementContext(),
@@ -337,19 +326,18 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     {
       if (options.abortRequested && options.abortRequested())
       {
-        result.aborted = true;
+        summary.aborted = true;
         return Status::success();
       }
-      Status status = processColor(context, members[color], color, iteration, state, result);
+      Status status =
+        processColor(context, members[color], color, iteration, state, summary, reporter);
       if (!status.ok())
       {
         return status;
       }
-      if (options.progress)
-      {
-        const int done = iteration * setup.numberOfColors + color + 1;
-        options.progress(0.1 + 0.8 * done / steps, "refining");
-      }
+      const double done = static_cast<double>(iteration * setup.numberOfColors + color + 1) / steps;
+      reporter.progress(
+        setup.stage, setup.progressStart + (setup.progressEnd - setup.progressStart) * done);
     }
   }
   return Status::success();

@@ -5,9 +5,10 @@
 #define cgmesh_ColorLoop_h
 
 #include "AdaptationDriver.h"
-#include "Partitioning/PartitionGraph.h"
-#include "Refinement/PartitionRefiner.h"
 #include "Improvement/QualityImprover.h"
+#include "Partitioning/PartitionGraph.h"
+#include "PhaseReporter.h"
+#include "Refinement/PartitionRefiner.h"
 #include "Refinement/TemplateTable.h"
 #include "Refinement/TetGenRefiner.h"
 
@@ -42,17 +43,22 @@ struct ColorLoopSetup
   std::int64_t maximumNumberOfCells = 0; // refuse an iteration forecast to exceed it (0: no limit)
   bool improve = false;
   ImprovementParameters improvement;
+  // Where the loop's progress goes: `stage`, from `progressStart` to `progressEnd` of it.
+  Stage stage = Stage::Refine;
+  double progressStart = 0;
+  double progressEnd = 1;
 };
 
 // Colours the partition graph with the named colouring (see coloringNames()) on `threads`
-// threads, and checks that the result is proper.
+// threads. A failed parallel task is returned as it is; a colouring that is not proper is an
+// Internal error.
 Status colorPartitions(const PartitionGraph& graph, const std::string& coloringName, int threads,
   std::vector<int>& colorOfPartition);
 
-// Runs all iterations. Sets result.aborted (and returns success) when options.abortRequested
-// says so between two colours.
+// Runs all iterations. Sets summary.aborted (and returns success) when options.abortRequested
+// says so between two colours. Time goes to the heal, adapt, improve and post phases.
 Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& options,
-  AdaptationState& state, AdaptationResult& result);
+  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter);
 
 } // namespace cgmesh
 

@@ -4,7 +4,6 @@
 #include "Coloring/PartitionColoring.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -72,10 +71,13 @@ PartitionGraph graphOfPartitions(const std::vector<PartitionMesh>& partitions, P
   return buildPartitionGraph(tets, partitionOfCell, static_cast<int>(partitions.size()), points);
 }
 
-// One improvement sweep over box partitions of the given layout.
+// One improvement sweep over box partitions of the given layout; `sweep` 0 or 1 of two.
 Status improveOverBoxes(const ColorLoopSetup& refinementSetup, const AdaptationOptions& options,
-  int cells, double shift, AdaptationState& state, AdaptationResult& result)
+  int cells, int sweepIndex, AdaptationState& state, AdaptationSummary& summary,
+  PhaseReporter& reporter)
 {
+  reporter.enter(Phase::Improve);
+  const double shift = 0.5 * sweepIndex;
   state.partitions = regroupIntoBoxes(state.partitions, state.coordinates, cells, shift);
   const PartitionGraph graph =
     graphOfPartitions(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
@@ -92,35 +94,33 @@ Status improveOverBoxes(const ColorLoopSetup& refinementSetup, const AdaptationO
   sweep.numberOfIterations = 1;
   sweep.refine = false;
   sweep.improve = true;
-  return runColorLoop(sweep, options, state, result);
+  sweep.stage = Stage::Sweep;
+  sweep.progressStart = 0.5 * sweepIndex;
+  sweep.progressEnd = 0.5 * (sweepIndex + 1);
+  return runColorLoop(sweep, options, state, summary, reporter);
 }
 
 } // namespace
 
 Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
-  const AdaptationOptions& options, int boxes, AdaptationState& state, AdaptationResult& result)
+  const AdaptationOptions& options, int boxesPerAxis, AdaptationState& state,
+  AdaptationSummary& summary, PhaseReporter& reporter)
 {
-  if (result.poorTets == 0)
+  if (summary.poorTets == 0)
   {
     return Status::success(); // nothing was below the target: no seam to work on
   }
-  const auto start = std::chrono::steady_clock::now();
-  const double improveBefore = result.seconds.improve;
-  const int cells = std::max(1, static_cast<int>(std::lround(std::cbrt(std::max(1, boxes)))));
   // Box faces freeze vertices in their turn: a second layout shifted by half a box frees them.
-  Status status = Status::success();
-  for (double shift : { 0.0, 0.5 })
+  for (int sweepIndex = 0; sweepIndex < 2; ++sweepIndex)
   {
-    status = improveOverBoxes(refinementSetup, options, cells, shift, state, result);
-    if (!status.ok() || result.aborted)
+    Status status = improveOverBoxes(
+      refinementSetup, options, boxesPerAxis, sweepIndex, state, summary, reporter);
+    if (!status.ok() || summary.aborted)
     {
-      break;
+      return status;
     }
   }
-  // The sweeps count as improvement, regrouping and colouring included.
-  result.seconds.improve =
-    improveBefore + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return status;
+  return Status::success();
 }
 
 } // namespace cgmesh

@@ -13,9 +13,10 @@ namespace cgmesh
 {
 
 // `refinementSetup` is the set-up the refinement ran with (threads, improvement parameters);
-// `boxes` the approximate number of box partitions.
+// `boxesPerAxis` the boxes along each axis of the first layout. All its time is improvement.
 Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
-  const AdaptationOptions& options, int boxes, AdaptationState& state, AdaptationResult& result);
+  const AdaptationOptions& options, int boxesPerAxis, AdaptationState& state,
+  AdaptationSummary& summary, PhaseReporter& reporter);
 
 } // namespace cgmesh
 

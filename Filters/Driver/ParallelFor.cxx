@@ -48,7 +48,7 @@ Status runParallel(int threads, std::int64_t count, const std::function<void(std
       }
     }
   }
-  return failed ? Status::failure(message) : Status::success();
+  return failed ? Status::failure(ErrorKind::TaskFailed, message) : Status::success();
 }
 
 } // namespace cgmesh

@@ -85,8 +85,8 @@ void test_cube_refinement_at_partition_counts()
   {
     const AdaptationResult serial = refine(input, partitions, 1, 2);
     checkRefinedCube(input, serial, 2);
-    CHECK_EQUAL(serial.numberOfPartitions, partitions > 1296 ? 1296 : partitions);
-    CHECK(serial.numberOfColors >= (partitions > 1 ? 2 : 1));
+    CHECK_EQUAL(serial.summary.plan.partitions, partitions > 1296 ? 1296 : partitions);
+    CHECK(serial.summary.numberOfColors >= (partitions > 1 ? 2 : 1));
     for (int threads : { 2, 3 })
     {
       CHECK(cgmesh_test::identicalResults(serial, refine(input, partitions, threads, 2)));
@@ -104,14 +104,14 @@ void test_every_coloring_gives_identical_output_across_threads()
     const AdaptationResult serial = refine(input, 64, 1, 1, options);
     checkRefinedCube(input, serial, 1);
     CHECK(cgmesh_test::identicalResults(serial, refine(input, 64, 2, 1, options)));
-    CHECK_EQUAL(serial.partitionsPerColor.size(), static_cast<std::size_t>(serial.numberOfColors));
+    CHECK_EQUAL(serial.summary.partitionsPerColor.size(), static_cast<std::size_t>(serial.summary.numberOfColors));
     std::int64_t cells = 0;
-    for (std::int64_t count : serial.cellsPerColor)
+    for (std::int64_t count : serial.summary.cellsPerColor)
     {
       cells += count;
     }
     CHECK_EQUAL(cells, serial.mesh.numberOfTets());
-    CHECK(serial.colorBalance >= 1.0);
+    CHECK(serial.summary.colorBalance >= 1.0);
   }
 }
 
@@ -125,9 +125,9 @@ void test_partition_by_region()
     options.partitionsPerRegion = perRegion;
     const AdaptationResult result = refine(input, 0, 2, 1, options);
     checkRefinedCube(input, result, 1);
-    CHECK_EQUAL(result.numberOfPartitions, 2 * perRegion);
+    CHECK_EQUAL(result.summary.plan.partitions, 2 * perRegion);
     // Every partition lies inside one region.
-    std::vector<int> regionOfPartition(result.numberOfPartitions, 0);
+    std::vector<int> regionOfPartition(result.summary.plan.partitions, 0);
     for (std::size_t t = 0; t < result.partitionOfCell.size(); ++t)
     {
       regionOfPartition[result.partitionOfCell[t]] = result.mesh.regions[t];
@@ -151,8 +151,9 @@ void test_partition_count_clamped_to_tets()
   TetMesh input;
   CHECK(generateKuhnCube(1, input).ok());
   const AdaptationResult result = refine(input, 1024, 2, 1);
-  CHECK_EQUAL(result.numberOfPartitions, 6);
-  CHECK_EQUAL(result.warnings.size(), 1u);
+  CHECK_EQUAL(result.summary.plan.partitions, 6);
+  CHECK_EQUAL(result.summary.warnings.size(), 1u);
+  CHECK(result.summary.warnings[0].kind == WarningKind::PartitionsReduced);
   checkRefinedCube(input, result, 1);
 }
 
@@ -184,7 +185,7 @@ void test_abort_between_colours()
   };
   AdaptationResult result;
   CHECK(adaptMesh(input, options, result).ok());
-  CHECK(result.aborted);
+  CHECK(result.summary.aborted);
   CHECK(result.mesh.tets.empty());
 }
 

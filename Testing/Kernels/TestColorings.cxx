@@ -9,6 +9,7 @@
 #include "TestHarness.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <random>
 
 using namespace cgmesh;
@@ -20,7 +21,7 @@ ParallelFor threadedExecutor(int threads)
 {
   return [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
   {
-    CHECK(runParallel(threads, count, body).ok());
+    return runParallel(threads, count, body);
   };
 }
 
@@ -33,6 +34,7 @@ ParallelFor reversedExecutor()
     {
       body(i);
     }
+    return Status::success();
   };
 }
 
@@ -129,10 +131,30 @@ void test_balanced_colorings_beat_greedy()
   CHECK(recolored < 0.8 * greedy);
 }
 
+// A task that throws inside a colouring's parallel round is reported as that task's failure, not
+// as an improper colouring found afterwards.
+void test_failing_parallel_task_is_reported_as_such()
+{
+  const PartitionGraph graph = randomGraph(500, 3000, 3);
+  const ParallelFor failing = [](std::int64_t count, const std::function<void(std::int64_t)>&)
+  {
+    return runParallel(2, count, [](std::int64_t) { throw std::runtime_error("task broke"); });
+  };
+  for (const char* name : { "iterative", "recoloring" })
+  {
+    std::vector<int> colors;
+    const Status status = makeColoring(name)->color(graph, failing, colors);
+    CHECK(!status.ok());
+    CHECK(status.kind() == ErrorKind::TaskFailed);
+    CHECK_EQUAL(status.message(), std::string("task broke"));
+  }
+}
+
 } // namespace
 
 int main()
 {
+  test_failing_parallel_task_is_reported_as_such();
   test_all_colorings_are_proper_and_deterministic();
   test_edge_cases();
   test_balanced_colorings_beat_greedy();

@@ -111,10 +111,10 @@ void test_conforming_and_identical_across_threads()
   {
     const AdaptationResult serial = run(input, delaunayOptions(1, iterations));
     checkConserved(input, serial);
-    CHECK(serial.tetgenPoints > 0);
-    CHECK_EQUAL(serial.delaunayFallbacks, 0);
+    CHECK(serial.summary.tetgenPoints > 0);
+    CHECK_EQUAL(serial.summary.delaunayFallbacks, 0);
     const AdaptationResult parallel = run(input, delaunayOptions(3, iterations));
-    CHECK(parallel.concurrentTetGen);
+    CHECK(parallel.summary.concurrentTetGen);
     CHECK(cgmesh_test::identicalResults(serial, parallel));
   }
 }
@@ -127,14 +127,14 @@ void test_concurrent_tetgen_matches_serialised_calls()
   serialised.numberOfPartitions = 128;
   serialised.serializeTetGen = true;
   const AdaptationResult reference = run(input, serialised);
-  CHECK(!reference.concurrentTetGen);
+  CHECK(!reference.summary.concurrentTetGen);
   AdaptationOptions concurrent = serialised;
   concurrent.serializeTetGen = false;
   for (int repeat = 0; repeat < 2; ++repeat)
   {
     concurrent.numberOfThreads = 2 + 2 * repeat;
     const AdaptationResult result = run(input, concurrent);
-    CHECK(result.concurrentTetGen);
+    CHECK(result.summary.concurrentTetGen);
     CHECK(cgmesh_test::identicalResults(reference, result));
   }
 }
@@ -219,20 +219,20 @@ void test_volume_bound_inside_partitions()
   {
     const bool touchesInterface = nearConstrained[tet[0]] || nearConstrained[tet[1]] ||
       nearConstrained[tet[2]] || nearConstrained[tet[3]];
-    const bool above = signedVolume6(result.mesh, tet) / 6.0 > result.volumeBound * (1 + 1e-9);
+    const bool above = signedVolume6(result.mesh, tet) / 6.0 > result.summary.plan.volumeBound * (1 + 1e-9);
     (touchesInterface ? atInterface : interior) += 1;
     (touchesInterface ? interfaceAbove : interiorAbove) += above;
     if (!touchesInterface)
     {
       worstInteriorRatio =
-        std::max(worstInteriorRatio, signedVolume6(result.mesh, tet) / 6.0 / result.volumeBound);
+        std::max(worstInteriorRatio, signedVolume6(result.mesh, tet) / 6.0 / result.summary.plan.volumeBound);
     }
   }
   std::cout << "tets above the volume bound: " << interiorAbove << " of " << interior
             << " inside partitions, " << interfaceAbove << " of " << atInterface
             << " within one layer of interfaces, boundaries or material interfaces; largest "
             << "interior volume / bound " << worstInteriorRatio << "\n";
-  CHECK_EQUAL(result.delaunayFallbacks, 0);
+  CHECK_EQUAL(result.summary.delaunayFallbacks, 0);
   CHECK(interior > result.mesh.numberOfTets() / 20);
   CHECK(interiorAbove * 1000 <= interior);
   CHECK(worstInteriorRatio <= 1.25);
@@ -245,14 +245,15 @@ void test_failed_partitions_fall_back_to_templates()
   options.simulateTetGenFailureIn = { 0, 7 };
   const AdaptationResult result = run(input, options);
   checkConserved(input, result);
-  CHECK_EQUAL(result.delaunayFallbacks, 4);
-  CHECK((std::multiset<int>(result.fallbackPartitions.begin(), result.fallbackPartitions.end()) ==
+  CHECK_EQUAL(result.summary.delaunayFallbacks, 4);
+  CHECK((std::multiset<int>(result.summary.fallbackPartitions.begin(), result.summary.fallbackPartitions.end()) ==
     std::multiset<int>{ 0, 0, 7, 7 }));
   int namingWarnings = 0;
-  for (const std::string& warning : result.warnings)
+  for (const AdaptationWarning& warning : result.summary.warnings)
   {
-    namingWarnings +=
-      warning.rfind("partition 0:", 0) == 0 || warning.rfind("partition 7:", 0) == 0;
+    CHECK(warning.kind == WarningKind::DelaunayFallback);
+    namingWarnings += (warning.partition == 0 && warning.text.rfind("partition 0:", 0) == 0) ||
+      (warning.partition == 7 && warning.text.rfind("partition 7:", 0) == 0);
   }
   CHECK_EQUAL(namingWarnings, 4);
   options.numberOfThreads = 1;

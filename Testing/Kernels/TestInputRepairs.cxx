@@ -101,7 +101,7 @@ void test_inverted_tets_are_reoriented()
     AdaptationResult result;
     CHECK(refineAndCheck(mesh, templateOptions(8), result).ok());
     CHECK_EQUAL(
-      result.reorientedTets, static_cast<std::int64_t>((mesh.tets.size() + every - 1) / every));
+      result.summary.reorientedTets, static_cast<std::int64_t>((mesh.tets.size() + every - 1) / every));
     const MeshReport report = inspectMesh(result.mesh);
     CHECK_EQUAL(report.invertedTets, 0);
     CHECK_CLOSE(report.volume, volume, 1e-12);
@@ -129,7 +129,7 @@ void test_touching_parts_without_shared_points_are_joined()
   }
   AdaptationResult result;
   CHECK(refineAndCheck(mesh, templateOptions(4), result).ok());
-  CHECK_EQUAL(result.mergedPoints, 9);
+  CHECK_EQUAL(result.summary.mergedPoints, 9);
   const MeshReport report = inspectMesh(result.mesh);
   CHECK_EQUAL(report.duplicatePoints, 0);
   CHECK_CLOSE(report.boundaryArea, 10.0, 1e-12); // the joined 2 x 1 x 1 box
@@ -155,7 +155,7 @@ void test_tiny_meshes_and_partition_counts()
   one.regions = { -7 };
   AdaptationResult result;
   CHECK(refineAndCheck(one, templateOptions(1024), result).ok());
-  CHECK_EQUAL(result.numberOfPartitions, 1);
+  CHECK_EQUAL(result.summary.plan.partitions, 1);
   CHECK(result.mesh.numberOfTets() > 1);
   CHECK(result.mesh.regions == std::vector<int>(result.mesh.tets.size(), -7));
 
@@ -164,9 +164,9 @@ void test_tiny_meshes_and_partition_counts()
   CHECK(result.mesh.tets.empty());
 
   CHECK(refineAndCheck(cube(2), templateOptions(1), result).ok());
-  CHECK_EQUAL(result.numberOfColors, 1);
+  CHECK_EQUAL(result.summary.numberOfColors, 1);
   CHECK(refineAndCheck(cube(2), templateOptions(48), result).ok());
-  CHECK_EQUAL(result.numberOfPartitions, 48);
+  CHECK_EQUAL(result.summary.plan.partitions, 48);
 }
 
 void test_size_guard_refuses_before_refining()

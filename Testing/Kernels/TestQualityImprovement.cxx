@@ -161,14 +161,14 @@ void test_device_refinement_with_improvement()
   {
     CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
   }
-  CHECK(improved.edgeRemovals + improved.faceSwaps + improved.vertexMoves > 0);
+  CHECK(improved.summary.edgeRemovals + improved.summary.faceSwaps + improved.summary.vertexMoves > 0);
   const double worstPlain = worstMeanRatio(plain.mesh);
   const double worstImproved = worstMeanRatio(improved.mesh);
   std::cout << "worst mean ratio " << worstPlain << " -> " << worstImproved
             << "; 1st percentile of the minimum dihedral angle "
             << percentileMinDihedral(plain.mesh, 0.01) << " -> "
-            << percentileMinDihedral(improved.mesh, 0.01) << " degrees; " << improved.edgeRemovals
-            << " edge removals, " << improved.faceSwaps << " face swaps, " << improved.vertexMoves
+            << percentileMinDihedral(improved.mesh, 0.01) << " degrees; " << improved.summary.edgeRemovals
+            << " edge removals, " << improved.summary.faceSwaps << " face swaps, " << improved.summary.vertexMoves
             << " vertex moves\n";
   CHECK(worstImproved > worstPlain);
   CHECK(percentileMinDihedral(improved.mesh, 0.01) >= percentileMinDihedral(plain.mesh, 0.01));

@@ -21,12 +21,11 @@ Status IterativeColoring::color(const PartitionGraph& graph, const ParallelFor& 
   colorOfPartition.assign(count, -1);
   std::vector<char> pending(count, 1);
   std::vector<int> snapshot;
-  this->Rounds = 0;
   // Each round fixes at least the smallest pending id, so `count` rounds always suffice.
   for (int round = 0; round < count + 1; ++round)
   {
     snapshot = colorOfPartition;
-    parallelFor(blockCount,
+    Status status = parallelFor(blockCount,
       [&](std::int64_t block)
       {
         ForbiddenColors forbidden;
@@ -48,11 +47,14 @@ Status IterativeColoring::color(const PartitionGraph& graph, const ParallelFor& 
           colorOfPartition[p] = forbidden.firstAllowed();
         }
       });
-    ++this->Rounds;
+    if (!status.ok())
+    {
+      return status;
+    }
 
     // Conflict detection reads the finished round and writes only the next round's flags.
     std::vector<char> nextPending(count, 0);
-    parallelFor(count,
+    status = parallelFor(count,
       [&](std::int64_t index)
       {
         const int p = static_cast<int>(index);
@@ -71,6 +73,10 @@ Status IterativeColoring::color(const PartitionGraph& graph, const ParallelFor& 
           }
         }
       });
+    if (!status.ok())
+    {
+      return status;
+    }
     pending.swap(nextPending);
     if (std::find(pending.begin(), pending.end(), 1) == pending.end())
     {

@@ -26,12 +26,8 @@ public:
   Status color(const PartitionGraph& graph, const ParallelFor& parallelFor,
     std::vector<int>& colorOfPartition) const override;
 
-  // Rounds the last call needed (for reports and tests).
-  int rounds() const { return this->Rounds; }
-
 private:
   int BlockSize;
-  mutable int Rounds = 0;
 };
 
 } // namespace cgmesh

@@ -16,10 +16,11 @@
 namespace cgmesh
 {
 
-// Runs body(i) for every i in [0, count), possibly concurrently. Supplied by the driver, which owns
-// the threads, so that colourings with parallel rounds stay free of any threading library.
+// Runs body(i) for every i in [0, count), possibly concurrently, and returns a failure when a call
+// threw. Supplied by the driver, which owns the threads, so that colourings with parallel rounds
+// stay free of any threading library. A colouring returns such a failure as it is.
 using ParallelFor =
-  std::function<void(std::int64_t count, const std::function<void(std::int64_t)>& body)>;
+  std::function<Status(std::int64_t count, const std::function<void(std::int64_t)>& body)>;
 
 class PartitionColoring
 {

@@ -10,11 +10,12 @@ namespace
 
 // For each member of one colour class: the colours none of its neighbours carries (palette-sized
 // flag rows, one per member).
-std::vector<char> allowedColorsOfClass(const PartitionGraph& graph, const std::vector<int>& members,
-  const std::vector<int>& colorOfPartition, int palette, const ParallelFor& parallelFor)
+Status allowedColorsOfClass(const PartitionGraph& graph, const std::vector<int>& members,
+  const std::vector<int>& colorOfPartition, int palette, const ParallelFor& parallelFor,
+  std::vector<char>& allowed)
 {
-  std::vector<char> allowed(members.size() * palette, 1);
-  parallelFor(static_cast<std::int64_t>(members.size()),
+  allowed.assign(members.size() * palette, 1);
+  return parallelFor(static_cast<std::int64_t>(members.size()),
     [&](std::int64_t i)
     {
       char* row = allowed.data() + i * palette;
@@ -25,7 +26,6 @@ std::vector<char> allowedColorsOfClass(const PartitionGraph& graph, const std::v
         row[colorOfPartition[neighbours[k]]] = 0;
       }
     });
-  return allowed;
 }
 
 } // namespace
@@ -49,8 +49,13 @@ Status RecoloringBalance::color(const PartitionGraph& graph, const ParallelFor& 
   }
   for (int source = palette - 1; source >= 0; --source)
   {
-    const std::vector<char> allowed =
-      allowedColorsOfClass(graph, members[source], colorOfPartition, palette, parallelFor);
+    std::vector<char> allowed;
+    status =
+      allowedColorsOfClass(graph, members[source], colorOfPartition, palette, parallelFor, allowed);
+    if (!status.ok())
+    {
+      return status;
+    }
     for (std::size_t i = 0; i < members[source].size() && sizes[source] > target; ++i)
     {
       const char* row = allowed.data() + i * palette;

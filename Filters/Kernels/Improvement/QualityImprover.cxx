@@ -656,7 +656,7 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   }
   catch (const std::bad_alloc&)
   {
-    return Status::failure("out of memory while improving a partition");
+    return Status::failure(ErrorKind::OutOfMemory, "out of memory while improving a partition");
   }
   return Status::success();
 }

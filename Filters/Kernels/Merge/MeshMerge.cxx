@@ -203,7 +203,7 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   }
   catch (const std::bad_alloc&)
   {
-    return Status::failure("out of memory while merging partitions");
+    return Status::failure(ErrorKind::OutOfMemory, "out of memory while merging partitions");
   }
   return Status::success();
 }

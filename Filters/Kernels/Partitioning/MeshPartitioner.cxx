@@ -100,7 +100,7 @@ Status partitionGraphKway(const DualGraph& graph, int parts, std::vector<int>& p
   }
   if (graph.neighbours.size() >= static_cast<std::size_t>(std::numeric_limits<idx_t>::max()))
   {
-    return Status::failure("mesh too large for METIS' 32-bit indices");
+    return Status::failure(ErrorKind::InvalidInput, "mesh too large for METIS' 32-bit indices");
   }
   std::vector<idx_t> offsets(graph.offsets.begin(), graph.offsets.end());
   std::vector<idx_t> neighbours(graph.neighbours.begin(), graph.neighbours.end());
@@ -172,11 +172,11 @@ Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<in
   partitionOfCell.assign(tetCount, 0);
   if (numberOfPartitions < 1)
   {
-    return Status::failure("the number of partitions must be at least 1");
+    return Status::failure(ErrorKind::InvalidOption, "the number of partitions must be at least 1");
   }
   if (numberOfPartitions > 1 && numberOfPartitions > tetCount)
   {
-    return Status::failure("more partitions than tets");
+    return Status::failure(ErrorKind::InvalidOption, "more partitions than tets");
   }
   if (numberOfPartitions == 1)
   {
@@ -190,11 +190,11 @@ Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
 {
   if (!mesh.hasRegions())
   {
-    return Status::failure("partitioning by region needs a region array");
+    return Status::failure(ErrorKind::InvalidOption, "partitioning by region needs a region array");
   }
   if (partitionsPerRegion < 1)
   {
-    return Status::failure("the number of partitions per region must be at least 1");
+    return Status::failure(ErrorKind::InvalidOption, "the number of partitions per region must be at least 1");
   }
   std::vector<int> regionIds = mesh.regions;
   std::sort(regionIds.begin(), regionIds.end());

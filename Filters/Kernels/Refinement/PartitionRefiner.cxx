@@ -237,7 +237,7 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
   }
   catch (const std::bad_alloc&)
   {
-    return Status::failure("out of memory while refining a partition");
+    return Status::failure(ErrorKind::OutOfMemory, "out of memory while refining a partition");
   }
   return Status::success();
 }

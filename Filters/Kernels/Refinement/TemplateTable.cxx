@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <numeric>
 #include <set>
-#include <stdexcept>
 #include <string>
 
 namespace cgmesh
@@ -422,7 +421,9 @@ TemplateTable::TemplateTable()
       TemplateSearch search(vertices, boundaryTriangulation(mask, ranks));
       if (!search.run(tets) || totalOrientation(tets) != referenceOrientation)
       {
-        throw std::logic_error("no valid template for split mask " + std::to_string(mask));
+        this->Validity = Status::failure(
+          ErrorKind::Internal, "no valid template for split mask " + std::to_string(mask));
+        return;
       }
       this->Partial[mask * 256 + rankCode(ranks)] = std::move(tets);
     }
@@ -433,7 +434,9 @@ TemplateTable::TemplateTable()
     this->Full[diagonal] = buildFullSplit(diagonal);
     if (totalOrientation(this->Full[diagonal]) != referenceOrientation)
     {
-      throw std::logic_error("invalid full-split template");
+      this->Validity =
+        Status::failure(ErrorKind::Internal, "invalid full-split template " + std::to_string(diagonal));
+      return;
     }
   }
 }

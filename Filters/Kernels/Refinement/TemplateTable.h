@@ -14,6 +14,8 @@
 #ifndef cgmesh_TemplateTable_h
 #define cgmesh_TemplateTable_h
 
+#include "Core/Status.h"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -26,9 +28,11 @@ using LocalTet = std::array<std::uint8_t, 4>;
 class TemplateTable
 {
 public:
-  // Builds every template; validates each one (positive volumes summing to the parent's, faces
-  // matching the rules above) and throws std::logic_error if any case cannot be built.
+  // Builds every template and validates each one (positive volumes summing to the parent's, faces
+  // matching the rules above); status() says whether every case could be built.
   TemplateTable();
+
+  const Status& status() const { return this->Validity; }
 
   // The child tets for one split pattern. `splitMask` has bit e set when edge e is split (1..62);
   // `cornerRanks[i]` is corner i's position (0..3) in the global vertex order.
@@ -44,6 +48,7 @@ public:
 private:
   std::vector<std::vector<LocalTet>> Partial; // indexed by splitMask * 256 + rankCode
   std::array<std::vector<LocalTet>, 3> Full;
+  Status Validity = Status::success();
 };
 
 // Triangulation of one tet face under the rules above, in local vertex numbers; exposed so that

@@ -32,7 +32,7 @@ Status checkCoordinates(const TetMesh& mesh)
   }
   if (nonFinite > 0)
   {
-    return Status::failure(std::to_string(nonFinite) +
+    return Status::failure(ErrorKind::InvalidInput, std::to_string(nonFinite) +
       " points have NaN or infinite coordinates (the first is point " + std::to_string(first) +
       ")");
   }
@@ -65,7 +65,7 @@ Status orientTets(TetMesh& mesh, InputRepairs& repairs)
   }
   if (degenerate > 0)
   {
-    return Status::failure(std::to_string(degenerate) +
+    return Status::failure(ErrorKind::InvalidInput, std::to_string(degenerate) +
       " tetrahedra have zero volume or repeat a point (the first is cell " + std::to_string(first) +
       "); remove them before refining");
   }

@@ -1,0 +1,127 @@
+// The options of one adaptation run and the table of user parameters. Each parameter is a field
+// below and one row of the table, which gives its property name, command-line flag, range,
+// default and documentation: the options' defaults, the filter's properties and clamps, the
+// command line's parsing and --help all come from it, and a test holds the ParaView XML to it.
+// Adding a parameter: a field and a row here, a line in vtkCoarseGrainedMeshAdaptation.h, a
+// property in the XML.
+#ifndef cgmesh_AdaptationOptions_h
+#define cgmesh_AdaptationOptions_h
+
+#include "Parameters.h"
+
+#include <climits>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cgmesh
+{
+
+enum class RefinementMethod
+{
+  Template, // split long edges by templates
+  Delaunay  // templates on interfaces, TetGen inside partitions
+};
+
+struct AdaptationOptions
+{
+  AdaptationOptions() { applyDefaults(*this); }
+
+  // User parameters: documented in parameterTable() below, which also sets their defaults.
+  int numberOfPartitions;
+  std::string regionArrayName; // read by the VTK adapter, which fills TetMesh::regions
+  bool partitionByRegion;
+  int partitionsPerRegion;
+  std::string coloring;
+  RefinementMethod method;
+  int numberOfIterations;
+  double maximumEdgeLength;
+  double edgeLengthFactor;
+  double maximumVolume;
+  double volumeFactor;
+  double radiusEdgeRatio;
+  bool improveQuality;
+  int improvementPasses;
+  int numberOfThreads;
+  std::int64_t maximumNumberOfCells;
+
+  // For tests and stress runs, not user parameters.
+  // Delaunay: run TetGen calls one at a time even where they could overlap.
+  bool serializeTetGen = false;
+  // Partitions whose TetGen call is made to fail, to exercise the fallback.
+  std::vector<int> simulateTetGenFailureIn;
+
+  // Called on the calling thread only: fraction in [0, 1], never decreasing, and the phase name.
+  std::function<void(double fraction, const char* phase)> progress;
+  // Polled on the calling thread between colours and phases; returning true aborts the run.
+  std::function<bool()> abortRequested;
+};
+
+inline const std::vector<ParameterSpec>& parameterTable()
+{
+  using K = ParameterKind;
+  using S = MethodScope;
+  using O = AdaptationOptions;
+  static const std::vector<ParameterSpec> table = {
+    { "NumberOfPartitions", "--partitions", "N", K::Integer, 1, INT_MAX, 1024, "", S::Any,
+      "METIS partitions; reduced, with a warning, to the number of tets of a smaller mesh; not "
+      "used with PartitionByRegion",
+      &O::numberOfPartitions },
+    { "RegionArrayName", "--region-array", "NAME", K::Text, 0, 0, 0, "", S::Any,
+      "numeric cell array of material/region ids (empty or None: one region)",
+      &O::regionArrayName },
+    { "PartitionByRegion", "--partition-by-region", "", K::Boolean, 0, 1, 0, "", S::Any,
+      "cut along the regions of RegionArrayName instead of METIS on the whole mesh: no partition "
+      "holds two regions",
+      &O::partitionByRegion },
+    { "PartitionsPerRegion", "--partitions-per-region", "N", K::Integer, 1, INT_MAX, 1, "", S::Any,
+      "with PartitionByRegion: METIS partitions within each region", &O::partitionsPerRegion },
+    { "ColoringAlgorithm", "--coloring", "NAME", K::Choice, 0, 3, 1, "", S::Any,
+      "colouring of the partition graph; every one gives the same colours for any thread count",
+      &O::coloring,
+      { { "greedy", "Greedy", "first fit, serial, unbalanced" },
+        { "greedy-lu", "Greedy-LU", "least-used permissible colour, serial, balanced" },
+        { "iterative", "Iterative", "speculative parallel colouring, conflict rounds" },
+        { "recoloring", "Recoloring", "parallel rebalancing of an initial colouring" } } },
+    { "Method", "--method", "NAME", K::Choice, 0, 1, 0, "", S::Any,
+      "serial refinement kernel run on each partition", &O::method,
+      { { "template", "Template", "split long edges by conforming templates" },
+        { "delaunay", "Delaunay", "templates on interfaces, TetGen inside partitions" } } },
+    { "NumberOfIterations", "--iterations", "K", K::Integer, 1, INT_MAX, 1, "", S::Any,
+      "refinement passes over all colours", &O::numberOfIterations },
+    { "MaximumEdgeLength", "--max-edge-length", "L", K::Real, 0, Unbounded, 0, "", S::Template,
+      "split edges longer than L (absolute); 0: use EdgeLengthFactor", &O::maximumEdgeLength },
+    { "EdgeLengthFactor", "--edge-length-factor", "F", K::Real, 0, Unbounded, 0.5, "",
+      S::Template, "split edges longer than F x the input's mean edge length",
+      &O::edgeLengthFactor },
+    { "MaximumVolume", "--max-volume", "V", K::Real, 0, Unbounded, 0, "", S::Delaunay,
+      "TetGen's volume bound (switch a), absolute; 0: use VolumeFactor", &O::maximumVolume },
+    { "VolumeFactor", "--volume-factor", "F", K::Real, 0, Unbounded, 0.1, "", S::Delaunay,
+      "volume bound V = F x the input's mean tet volume; interface edges are split by templates "
+      "down to (6 sqrt(2) V)^(1/3), the edge of the regular tet of volume V",
+      &O::volumeFactor },
+    { "RadiusEdgeRatio", "--radius-edge-ratio", "Q", K::Real, 1, Unbounded, 2, "", S::Delaunay,
+      "TetGen's radius-edge quality bound (switch q); smaller asks for better tets and more points",
+      &O::radiusEdgeRatio },
+    { "ImproveQuality", "--no-improve", "", K::Boolean, 0, 1, 1, "", S::Any,
+      "improve the tets after refinement (edge removal, face swaps, guarded smoothing), then "
+      "again over box partitions across the former interfaces; --no-improve skips it",
+      &O::improveQuality },
+    { "NumberOfImprovementPasses", "--improve-passes", "N", K::Integer, 0, 20, 2, "", S::Any,
+      "passes of edge removal, face swaps and smoothing per partition in each sweep",
+      &O::improvementPasses },
+    { "NumberOfThreads", "--threads", "T", K::Integer, 0, INT_MAX, 0, "", S::Any,
+      "OpenMP threads, 0 = all cores; the output does not depend on it", &O::numberOfThreads },
+    { "MaximumNumberOfCells", "--max-cells", "N", K::Count, 0, 9007199254740992.0, 100000000, "",
+      S::Any,
+      "size guard: refuse, before allocating them, a refinement forecast to make more tets; "
+      "0 = no limit",
+      &O::maximumNumberOfCells },
+  };
+  return table;
+}
+
+} // namespace cgmesh
+
+#endif

@@ -1,0 +1,176 @@
+#include "AdaptationPlan.h"
+
+#include "Core/Geometry.h"
+#include "ParallelFor.h"
+#include "Refinement/TetGenRefiner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace cgmesh
+{
+namespace
+{
+
+Status invalidOption(std::string message)
+{
+  return Status::failure(ErrorKind::InvalidOption, std::move(message));
+}
+
+Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool empty)
+{
+  if (options.numberOfIterations < 0)
+  {
+    return invalidOption("the number of iterations must not be negative");
+  }
+  if (!options.partitionByRegion && options.numberOfPartitions < 1)
+  {
+    return invalidOption("the number of partitions must be at least 1");
+  }
+  if (options.partitionByRegion && !hasRegions && !empty)
+  {
+    return invalidOption("partitioning by region needs a region array");
+  }
+  if (options.partitionByRegion && options.partitionsPerRegion < 1)
+  {
+    return invalidOption("the number of partitions per region must be at least 1");
+  }
+  if (options.method == RefinementMethod::Template && !(options.maximumEdgeLength > 0) &&
+    !(options.edgeLengthFactor > 0))
+  {
+    return invalidOption("set a positive maximum edge length or edge length factor");
+  }
+  if (options.method == RefinementMethod::Delaunay)
+  {
+    if (!(options.maximumVolume > 0) && !(options.volumeFactor > 0))
+    {
+      return invalidOption("set a positive maximum volume or volume factor");
+    }
+    if (!(options.radiusEdgeRatio >= 1.0))
+    {
+      return invalidOption("the radius-edge ratio bound must be at least 1");
+    }
+  }
+  return Status::success();
+}
+
+// Mean over the six edges of every tet (shared edges count once per tet, which weighs edges by
+// how many tets use them and needs no edge list).
+double meanTetEdgeLength(const TetMesh& mesh)
+{
+  double sum = 0;
+  for (const Tet& tet : mesh.tets)
+  {
+    for (const auto& edge : TetEdgeCorners)
+    {
+      sum += std::sqrt(squaredEdgeLength(mesh, tet[edge[0]], tet[edge[1]]));
+    }
+  }
+  return mesh.tets.empty() ? 0 : sum / (6.0 * static_cast<double>(mesh.tets.size()));
+}
+
+double meanTetVolume(const TetMesh& mesh)
+{
+  double sum = 0;
+  for (const Tet& tet : mesh.tets)
+  {
+    sum += std::abs(signedVolume6(mesh, tet)) / 6.0;
+  }
+  return mesh.tets.empty() ? 0 : sum / static_cast<double>(mesh.tets.size());
+}
+
+// What partitionByRegion() will make: each region min(partitionsPerRegion, its tets) parts.
+int partitionsByRegion(const TetMesh& input, int partitionsPerRegion)
+{
+  std::vector<int> regions = input.regions;
+  std::sort(regions.begin(), regions.end());
+  std::int64_t total = 0;
+  for (auto first = regions.begin(); first != regions.end();)
+  {
+    const auto last = std::upper_bound(first, regions.end(), *first);
+    total += std::min<std::int64_t>(partitionsPerRegion, last - first);
+    first = last;
+  }
+  return static_cast<int>(total);
+}
+
+int resolvePartitions(
+  const TetMesh& input, const AdaptationOptions& options, std::vector<AdaptationWarning>& warnings)
+{
+  const CellId tets = input.numberOfTets();
+  if (tets == 0)
+  {
+    return 1;
+  }
+  if (options.partitionByRegion)
+  {
+    return partitionsByRegion(input, options.partitionsPerRegion);
+  }
+  if (options.numberOfPartitions > tets)
+  {
+    warnings.push_back({ WarningKind::PartitionsReduced, -1,
+      "requested " + std::to_string(options.numberOfPartitions) + " partitions for " +
+        std::to_string(tets) + " tetrahedra; using " + std::to_string(tets) });
+    return static_cast<int>(tets);
+  }
+  return options.numberOfPartitions;
+}
+
+} // namespace
+
+Status checkOptionsAndInput(const TetMesh& input, const AdaptationOptions& options)
+{
+  if (input.coordinates.size() % 3 != 0)
+  {
+    return Status::failure(
+      ErrorKind::InvalidInput, "point coordinates are not a multiple of three values");
+  }
+  if (input.hasRegions() && input.regions.size() != input.tets.size())
+  {
+    return Status::failure(
+      ErrorKind::InvalidInput, "the region array does not have one value per tet");
+  }
+  const PointId pointCount = input.numberOfPoints();
+  for (const Tet& tet : input.tets)
+  {
+    for (PointId p : tet)
+    {
+      if (p < 0 || p >= pointCount)
+      {
+        return Status::failure(ErrorKind::InvalidInput,
+          "a tet references point " + std::to_string(p) + " but the mesh has " +
+            std::to_string(pointCount) + " points");
+      }
+    }
+  }
+  return checkOptions(options, input.hasRegions(), input.tets.empty());
+}
+
+AdaptationPlan resolvePlan(
+  const TetMesh& input, const AdaptationOptions& options, std::vector<AdaptationWarning>& warnings)
+{
+  AdaptationPlan plan;
+  plan.threads = resolveThreadCount(options.numberOfThreads);
+  if (options.method == RefinementMethod::Delaunay)
+  {
+    plan.volumeBound = options.maximumVolume > 0 ? options.maximumVolume
+                                                 : options.volumeFactor * meanTetVolume(input);
+    plan.edgeLengthThreshold = interfaceEdgeLengthForVolume(plan.volumeBound);
+    // Improvement must not undo Delaunay refinement's volume bound.
+    plan.improvementVolumeBound = plan.volumeBound;
+  }
+  else
+  {
+    plan.edgeLengthThreshold = options.maximumEdgeLength > 0
+      ? options.maximumEdgeLength
+      : options.edgeLengthFactor * meanTetEdgeLength(input);
+  }
+  plan.partitions = resolvePartitions(input, options, warnings);
+  // About as many boxes as refinement partitions, so that a box is about a partition's size.
+  plan.boxesPerAxis =
+    std::max(1, static_cast<int>(std::lround(std::cbrt(std::max(1, plan.partitions)))));
+  return plan;
+}
+
+} // namespace cgmesh

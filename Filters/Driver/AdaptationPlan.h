@@ -1,0 +1,37 @@
+// The plan of one run: the options resolved against the input once, before any work. Everything
+// later stages need to know about the settings is here; nothing downstream changes it.
+#ifndef cgmesh_AdaptationPlan_h
+#define cgmesh_AdaptationPlan_h
+
+#include "AdaptationMessages.h"
+#include "AdaptationOptions.h"
+#include "Core/Status.h"
+#include "Core/TetMesh.h"
+
+#include <vector>
+
+namespace cgmesh
+{
+
+struct AdaptationPlan
+{
+  int threads = 1;                  // 0 in the options means every core
+  int partitions = 1;               // refinement partitions (after clamping, or by region)
+  double edgeLengthThreshold = 0;   // template threshold, or Delaunay's interface edge length
+  double volumeBound = 0;           // Delaunay: the absolute volume bound; 0 for templates
+  int boxesPerAxis = 1;             // improvement sweeps: boxes along each axis
+  double improvementVolumeBound = 0; // improvement must not make tets larger than this (0: none)
+};
+
+// Checks `options` on their own and against the raw input's shape (ids in range, one region per
+// tet); InvalidInput or InvalidOption on failure.
+Status checkOptionsAndInput(const TetMesh& input, const AdaptationOptions& options);
+
+// Resolves `options` against the prepared (repaired) input. Appends a warning when the partition
+// count had to be reduced.
+AdaptationPlan resolvePlan(const TetMesh& input, const AdaptationOptions& options,
+  std::vector<AdaptationWarning>& warnings);
+
+} // namespace cgmesh
+
+#endif
