@@ -221,7 +221,11 @@ int runTetGenCommand(const std::vector<std::string>& commandArguments)
   status = runTetGen(arguments, input, output, run);
   if (!status.ok())
     return reportError(status.message());
-  run.qualitySeconds = addTetQualityArrays(output, 0);
+  const Stopwatch qualityStopwatch;
+  status = addTetQualityArrays(output, 0);
+  if (!status.ok())
+    return reportError(status.message());
+  run.qualitySeconds = qualityStopwatch.seconds();
 
   const Stopwatch writeStopwatch;
   status = writeUnstructuredGrid(output, arguments.outputFile);

@@ -14,15 +14,13 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 
 namespace cgmesh
 {
 
-double addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
+Status addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
 {
-  const auto start = std::chrono::steady_clock::now();
   const vtkIdType numberOfCells = grid->GetNumberOfCells();
   vtkNew<vtkDoubleArray> edgeRatio;
   edgeRatio->SetName("EdgeRatio");
@@ -36,7 +34,7 @@ double addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
   vtkPoints* points = grid->GetPoints();
   vtkCellArray* cells = grid->GetCells();
   // Each block writes only its own cells' values, so the blocks need no synchronisation.
-  runParallel(resolveThreadCount(threads), blocks,
+  const Status status = runParallel(resolveThreadCount(threads), blocks,
     [&](std::int64_t block)
     {
       vtkNew<vtkTetra> tetra;
@@ -60,9 +58,12 @@ double addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
         minDihedralAngle->SetValue(cellId, minimumDihedralAngle(p[0], p[1], p[2], p[3]));
       }
     });
-  grid->GetCellData()->AddArray(edgeRatio);
-  grid->GetCellData()->AddArray(minDihedralAngle);
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (status.ok())
+  {
+    grid->GetCellData()->AddArray(edgeRatio);
+    grid->GetCellData()->AddArray(minDihedralAngle);
+  }
+  return status;
 }
 
 } // namespace cgmesh

@@ -2,6 +2,7 @@
 #ifndef cgmeshTetQuality_h
 #define cgmeshTetQuality_h
 
+#include "Core/Status.h"
 #include "cgmeshFiltersModule.h" // for export macro
 
 class vtkUnstructuredGrid;
@@ -16,8 +17,8 @@ namespace cgmesh
 // (cgmesh::minimumDihedralAngle): vtkMeshQuality's tet MIN_ANGLE in ParaView 5.11's VTK returns
 // other values (60 degrees for a Kuhn tet whose dihedral angles are 45, 60 and 90; up to 87
 // degrees, above the regular tet's 70.53).
-// Returns the seconds spent.
-CGMESHFILTERS_EXPORT double addTetQualityArrays(vtkUnstructuredGrid* grid, int threads);
+// On failure (a block that threw) neither array is added: never a partly filled one.
+CGMESHFILTERS_EXPORT Status addTetQualityArrays(vtkUnstructuredGrid* grid, int threads);
 
 } // namespace cgmesh
 

@@ -503,7 +503,15 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
 
   fillOutput(input, result, output);
   this->UpdateProgress(0.9);
-  const double qualitySeconds = cgmesh::addTetQualityArrays(output, result.summary.plan.threads);
+  const cgmesh::Stopwatch qualityStopwatch;
+  status = cgmesh::addTetQualityArrays(output, result.summary.plan.threads);
+  const double qualitySeconds = qualityStopwatch.seconds();
+  if (!status.ok())
+  {
+    output->Initialize();
+    vtkErrorMacro(<< "Quality arrays failed: " << status.message());
+    return 0;
+  }
   this->Internals->LastQualitySeconds = qualitySeconds;
   this->Internals->LastTotalSeconds = stopwatch.seconds();
   addFieldData(result.summary, this, qualitySeconds, this->Internals->LastTotalSeconds,
@@ -526,7 +534,10 @@ void vtkCoarseGrainedMeshAdaptation::PrintSelf(ostream& os, vtkIndent indent)
     }
     else
     {
-      os << cgmesh::numericValue(spec, this->Internals->Parameters) << "\n";
+      const double value = cgmesh::numericValue(spec, this->Internals->Parameters);
+      // A count of 0 is the size guard switched off.
+      os << value << (spec.kind == cgmesh::ParameterKind::Count && value == 0 ? " (no limit)" : "")
+         << "\n";
     }
   }
 }

@@ -30,17 +30,6 @@ inline double meanRatio(const double* p0, const double* p1, const double* p2, co
   return 12.0 * std::cbrt(9.0 * volume * volume) / sumSquared;
 }
 
-// Ratio of the longest to the shortest edge (1 at best), as vtkMeshQuality's edge ratio.
-inline double edgeRatio(const double* p0, const double* p1, const double* p2, const double* p3)
-{
-  const double squared[6] = { squaredDistance(p0, p1), squaredDistance(p0, p2),
-    squaredDistance(p0, p3), squaredDistance(p1, p2), squaredDistance(p1, p3),
-    squaredDistance(p2, p3) };
-  const double longest = *std::max_element(squared, squared + 6);
-  const double shortest = *std::min_element(squared, squared + 6);
-  return shortest > 0 ? std::sqrt(longest / shortest) : HUGE_VAL;
-}
-
 // Smallest dihedral angle in degrees (70.53 for the regular tet).
 inline double minimumDihedralAngle(
   const double* p0, const double* p1, const double* p2, const double* p3)

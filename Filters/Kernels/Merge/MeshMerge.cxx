@@ -193,7 +193,6 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
         merged.mesh.tets.push_back(
           { outputIdOf[tet[0]], outputIdOf[tet[1]], outputIdOf[tet[2]], outputIdOf[tet[3]] });
         merged.parentCell.push_back(partition.parentCells[t]);
-        merged.partitionOfCell.push_back(static_cast<int>(part));
         if (hasRegions)
         {
           merged.mesh.regions.push_back(partition.regions[t]);

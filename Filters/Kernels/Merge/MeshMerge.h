@@ -28,7 +28,6 @@ struct MergedMesh
 {
   TetMesh mesh;
   std::vector<CellId> parentCell;   // per output tet: the input tet it came from
-  std::vector<int> partitionOfCell; // per output tet
   PointProvenance provenance;       // per output point, over input point ids
   PointId removedPoints = 0;        // points no tet uses (unused input points)
 };
