@@ -4,9 +4,9 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <iomanip>
 #include <map>
 #include <set>
-#include <iomanip>
 #include <sstream>
 
 namespace cgmesh
@@ -206,8 +206,8 @@ Status applyParameter(
     case ParameterKind::Integer:
     {
       int parsed = 0;
-      status = parseInt(value, spec.flag, static_cast<int>(spec.minimum),
-        static_cast<int>(spec.maximum), parsed);
+      status = parseInt(
+        value, spec.flag, static_cast<int>(spec.minimum), static_cast<int>(spec.maximum), parsed);
       number = parsed;
       break;
     }
@@ -325,7 +325,8 @@ std::string refineOptionsHelp()
       head += " " + std::string(spec.valueName);
     std::string text = spec.help;
     if (spec.scope != MethodScope::Any)
-      text = std::string(spec.scope == MethodScope::Template ? "template" : "delaunay") + ": " + text;
+      text =
+        std::string(spec.scope == MethodScope::Template ? "template" : "delaunay") + ": " + text;
     if (spec.kind == ParameterKind::Integer || spec.kind == ParameterKind::Real ||
       spec.kind == ParameterKind::Count)
       text += ", " + rangeText(spec);

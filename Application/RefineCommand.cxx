@@ -25,25 +25,26 @@ namespace
 
 void printRefineUsage()
 {
-  std::cout << "usage: cgmesh refine IN OUT [options]\n"
-               "\n"
-               "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
-               "Template: edges longer than the threshold are split by conforming templates.\n"
-               "Delaunay: interface edges by templates, then TetGen (switches r Y q a) refines\n"
-               "partition interiors with their boundary kept; a partition where TetGen fails is\n"
-               "refined by templates instead (a warning names it).\n"
-               "\n"
-            << refineOptionsHelp()
-            << "  --stats FILE.json       write counts, colour populations, Delaunay figures,\n"
-               "                          improvement counts, the quality summary and phase timings\n"
-               "                          as JSON\n"
-               "\n"
-               "Improvement works on tets whose mean ratio 12 (3V)^(2/3) / sum of squared edge\n"
-               "lengths (1 = regular) is below 0.5 and keeps a change only when the worst mean ratio\n"
-               "rises; partition-interface, boundary and material-interface vertices stay fixed.\n"
-               "The table and the stats file hold the quality of all tets, of the interior tets and of\n"
-               "the tets near former partition interfaces (cell array NearFormerInterface): tet count,\n"
-               "minimum and 1st percentile of MinDihedralAngle (degrees), 99th percentile of EdgeRatio.\n";
+  std::cout
+    << "usage: cgmesh refine IN OUT [options]\n"
+       "\n"
+       "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
+       "Template: edges longer than the threshold are split by conforming templates.\n"
+       "Delaunay: interface edges by templates, then TetGen (switches r Y q a) refines\n"
+       "partition interiors with their boundary kept; a partition where TetGen fails is\n"
+       "refined by templates instead (a warning names it).\n"
+       "\n"
+    << refineOptionsHelp()
+    << "  --stats FILE.json       write counts, colour populations, Delaunay figures,\n"
+       "                          improvement counts, the quality summary and phase timings\n"
+       "                          as JSON\n"
+       "\n"
+       "Improvement works on tets whose mean ratio 12 (3V)^(2/3) / sum of squared edge\n"
+       "lengths (1 = regular) is below 0.5 and keeps a change only when the worst mean ratio\n"
+       "rises; partition-interface, boundary and material-interface vertices stay fixed.\n"
+       "The table and the stats file hold the quality of all tets, of the interior tets and of\n"
+       "the tets near former partition interfaces (cell array NearFormerInterface): tet count,\n"
+       "minimum and 1st percentile of MinDihedralAngle (degrees), 99th percentile of EdgeRatio.\n";
 }
 
 // Every parameter of the table, set on the filter by name.

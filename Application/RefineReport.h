@@ -67,8 +67,8 @@ struct RefineStatistics
 // Fills counts, colours, partitions, threads, threshold, colouring, colour populations,
 // improvement counts and phase seconds from the filter's summary of its last (successful) run,
 // and the quality summaries from the output's cell arrays.
-void collectFilterStatistics(
-  vtkCoarseGrainedMeshAdaptation* filter, vtkUnstructuredGrid* output, RefineStatistics& statistics);
+void collectFilterStatistics(vtkCoarseGrainedMeshAdaptation* filter, vtkUnstructuredGrid* output,
+  RefineStatistics& statistics);
 
 void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stream);
 

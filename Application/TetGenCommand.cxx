@@ -29,7 +29,6 @@ namespace cgmesh
 namespace
 {
 
-
 void printTetGenUsage()
 {
   std::cout

@@ -1,7 +1,7 @@
 #include "cgmeshTetQuality.h"
 
-#include "ParallelFor.h"
 #include "Core/TetQuality.h"
+#include "ParallelFor.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

@@ -233,8 +233,8 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   {
     std::string name = cgmesh::phaseName(static_cast<cgmesh::Phase>(phase));
     name[0] = static_cast<char>(std::toupper(name[0]));
-    addFieldValue(fieldData, (name + "Seconds").c_str(),
-      result.seconds[static_cast<cgmesh::Phase>(phase)]);
+    addFieldValue(
+      fieldData, (name + "Seconds").c_str(), result.seconds[static_cast<cgmesh::Phase>(phase)]);
   }
   addFieldValue(fieldData, "QualitySeconds", qualitySeconds);
   addFieldValue(fieldData, "TotalSeconds", totalSeconds);
@@ -370,8 +370,8 @@ void vtkCoarseGrainedMeshAdaptation::SetParameterText(const char* name, const ch
 const char* vtkCoarseGrainedMeshAdaptation::GetParameterText(const char* name)
 {
   const cgmesh::ParameterSpec* spec = name ? cgmesh::findParameter(name) : nullptr;
-  const auto* field = spec ? std::get_if<std::string cgmesh::AdaptationOptions::*>(&spec->field)
-                           : nullptr;
+  const auto* field =
+    spec ? std::get_if<std::string cgmesh::AdaptationOptions::*>(&spec->field) : nullptr;
   if (!spec || spec->kind != cgmesh::ParameterKind::Text || !field)
   {
     vtkErrorMacro(<< "No text parameter named " << (name ? name : "(null)") << ".");

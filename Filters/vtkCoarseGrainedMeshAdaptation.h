@@ -62,16 +62,31 @@ struct AdaptationSummary;
   {                                                                                                \
     this->SetParameterValue(#name, static_cast<double>(value));                                    \
   }                                                                                                \
-  virtual type Get##name() { return static_cast<type>(this->GetParameterValue(#name)); }
+  virtual type Get##name()                                                                         \
+  {                                                                                                \
+    return static_cast<type>(this->GetParameterValue(#name));                                      \
+  }
 
 #define cgmeshBooleanParameterMacro(name)                                                          \
   cgmeshParameterMacro(name, bool);                                                                \
-  virtual void name##On() { this->Set##name(true); }                                               \
-  virtual void name##Off() { this->Set##name(false); }
+  virtual void name##On()                                                                          \
+  {                                                                                                \
+    this->Set##name(true);                                                                         \
+  }                                                                                                \
+  virtual void name##Off()                                                                         \
+  {                                                                                                \
+    this->Set##name(false);                                                                        \
+  }
 
 #define cgmeshTextParameterMacro(name)                                                             \
-  virtual void Set##name(const char* value) { this->SetParameterText(#name, value); }              \
-  virtual const char* Get##name() { return this->GetParameterText(#name); }
+  virtual void Set##name(const char* value)                                                        \
+  {                                                                                                \
+    this->SetParameterText(#name, value);                                                          \
+  }                                                                                                \
+  virtual const char* Get##name()                                                                  \
+  {                                                                                                \
+    return this->GetParameterText(#name);                                                          \
+  }
 
 class CGMESHFILTERS_EXPORT vtkCoarseGrainedMeshAdaptation : public vtkUnstructuredGridAlgorithm
 {
@@ -150,14 +165,23 @@ public:
     TEMPLATE = 0, // split long edges by conforming templates
     DELAUNAY = 1  // templates on interfaces, TetGen inside partitions
   };
-  void SetMethodToTemplate() { this->SetMethod(TEMPLATE); }
-  void SetMethodToDelaunay() { this->SetMethod(DELAUNAY); }
+  void SetMethodToTemplate()
+  {
+    this->SetMethod(TEMPLATE);
+  }
+  void SetMethodToDelaunay()
+  {
+    this->SetMethod(DELAUNAY);
+  }
 
   /**
    * Name of the current method: "template" or "delaunay" (the names of the command line's --method
    * option).
    */
-  const char* GetMethodName() { return MethodToName(this->GetMethod()); }
+  const char* GetMethodName()
+  {
+    return MethodToName(this->GetMethod());
+  }
 
   ///@{
   /**
@@ -182,10 +206,22 @@ public:
     ITERATIVE = 2,
     RECOLORING = 3
   };
-  void SetColoringAlgorithmToGreedy() { this->SetColoringAlgorithm(GREEDY); }
-  void SetColoringAlgorithmToGreedyLeastUsed() { this->SetColoringAlgorithm(GREEDY_LEAST_USED); }
-  void SetColoringAlgorithmToIterative() { this->SetColoringAlgorithm(ITERATIVE); }
-  void SetColoringAlgorithmToRecoloring() { this->SetColoringAlgorithm(RECOLORING); }
+  void SetColoringAlgorithmToGreedy()
+  {
+    this->SetColoringAlgorithm(GREEDY);
+  }
+  void SetColoringAlgorithmToGreedyLeastUsed()
+  {
+    this->SetColoringAlgorithm(GREEDY_LEAST_USED);
+  }
+  void SetColoringAlgorithmToIterative()
+  {
+    this->SetColoringAlgorithm(ITERATIVE);
+  }
+  void SetColoringAlgorithmToRecoloring()
+  {
+    this->SetColoringAlgorithm(RECOLORING);
+  }
 
   /**
    * Name of the current colouring: "greedy", "greedy-lu", "iterative" or "recoloring" (the names

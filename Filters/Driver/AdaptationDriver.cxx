@@ -1,8 +1,8 @@
 #include "AdaptationDriver.h"
 
+#include "ColorLoop.h"
 #include "Coloring/ColoringSupport.h"
 #include "Coloring/PartitionColoring.h"
-#include "ColorLoop.h"
 #include "ImprovementSweep.h"
 #include "ParallelFor.h"
 #include "Partitioning/MeshPartitioner.h"
@@ -110,8 +110,8 @@ const TemplateTable& templateTable()
   return templates;
 }
 
-ColorLoopSetup refinementSetup(const AdaptationOptions& options, const AdaptationSummary& summary,
-  const PartitionGraph& graph)
+ColorLoopSetup refinementSetup(
+  const AdaptationOptions& options, const AdaptationSummary& summary, const PartitionGraph& graph)
 {
   const AdaptationPlan& plan = summary.plan;
   ColorLoopSetup setup;
@@ -134,8 +134,7 @@ ColorLoopSetup refinementSetup(const AdaptationOptions& options, const Adaptatio
 
 // TetGen calls go to one worker process per thread (or one, serialised, on request).
 void attachTetGen(const AdaptationOptions& options, ColorLoopSetup& setup,
-  AdaptationSummary& summary, std::unique_ptr<TetGenWorkerPool>& workers,
-  std::mutex& serialTetGen)
+  AdaptationSummary& summary, std::unique_ptr<TetGenWorkerPool>& workers, std::mutex& serialTetGen)
 {
   const bool serialize = options.serializeTetGen;
   const int threads = summary.plan.threads;
@@ -200,8 +199,8 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
     setup, options, summary.plan.boxesPerAxis, state, summary, reporter);
 }
 
-Status runPipeline(const TetMesh& input, const AdaptationOptions& options,
-  AdaptationResult& result, PhaseReporter& reporter)
+Status runPipeline(const TetMesh& input, const AdaptationOptions& options, AdaptationResult& result,
+  PhaseReporter& reporter)
 {
   AdaptationSummary& summary = result.summary;
   std::vector<int> partitionOfCell;

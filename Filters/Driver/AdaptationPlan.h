@@ -15,11 +15,11 @@ namespace cgmesh
 
 struct AdaptationPlan
 {
-  int threads = 1;                  // 0 in the options means every core
-  int partitions = 1;               // refinement partitions (after clamping, or by region)
-  double edgeLengthThreshold = 0;   // template threshold, or Delaunay's interface edge length
-  double volumeBound = 0;           // Delaunay: the absolute volume bound; 0 for templates
-  int boxesPerAxis = 1;             // improvement sweeps: boxes along each axis
+  int threads = 1;                   // 0 in the options means every core
+  int partitions = 1;                // refinement partitions (after clamping, or by region)
+  double edgeLengthThreshold = 0;    // template threshold, or Delaunay's interface edge length
+  double volumeBound = 0;            // Delaunay: the absolute volume bound; 0 for templates
+  int boxesPerAxis = 1;              // improvement sweeps: boxes along each axis
   double improvementVolumeBound = 0; // improvement must not make tets larger than this (0: none)
 };
 
@@ -29,8 +29,8 @@ Status checkOptionsAndInput(const TetMesh& input, const AdaptationOptions& optio
 
 // Resolves `options` against the prepared (repaired) input. Appends a warning when the partition
 // count had to be reduced.
-AdaptationPlan resolvePlan(const TetMesh& input, const AdaptationOptions& options,
-  std::vector<AdaptationWarning>& warnings);
+AdaptationPlan resolvePlan(
+  const TetMesh& input, const AdaptationOptions& options, std::vector<AdaptationWarning>& warnings);
 
 } // namespace cgmesh
 

@@ -1,8 +1,8 @@
 #include "ColorLoop.h"
 
+#include "Coloring/PartitionColoring.h"
 #include "Core/Geometry.h"
 #include "ParallelFor.h"
-#include "Coloring/PartitionColoring.h"
 
 #include "Core/Stopwatch.h"
 
@@ -263,9 +263,10 @@ Status checkForecastSize(
   }
   if (status.ok() && total > setup.maximumNumberOfCells)
   {
-    return Status::failure(ErrorKind::SizeLimit, "refining would produce about " + std::to_string(total) +
-      " tetrahedra, more than the limit of " + std::to_string(setup.maximumNumberOfCells) +
-      " (MaximumNumberOfCells); raise the limit or refine less");
+    return Status::failure(ErrorKind::SizeLimit,
+      "refining would produce about " + std::to_string(total) +
+        " tetrahedra, more than the limit of " + std::to_string(setup.maximumNumberOfCells) +
+        " (MaximumNumberOfCells); raise the limit or refine less");
   }
   return status;
 }
@@ -288,8 +289,9 @@ Status colorPartitions(const PartitionGraph& graph, const std::string& coloringN
   Status status = coloring->color(graph, parallelFor, colorOfPartition);
   if (status.ok() && !isProperColoring(graph, colorOfPartition))
   {
-    return Status::failure(ErrorKind::Internal, std::string("colouring '") + coloring->name() +
-      "' gave two adjacent partitions the same colour");
+    return Status::failure(ErrorKind::Internal,
+      std::string("colouring '") + coloring->name() +
+        "' gave two adjacent partitions the same colour");
   }
   return status;
 }

@@ -1,7 +1,7 @@
 #include "ImprovementSweep.h"
 
-#include "ParallelFor.h"
 #include "Coloring/PartitionColoring.h"
+#include "ParallelFor.h"
 
 #include <algorithm>
 #include <cmath>

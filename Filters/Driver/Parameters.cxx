@@ -131,7 +131,7 @@ bool setTextValue(const ParameterSpec& spec, const std::string& value, Adaptatio
   {
     return false;
   }
-  options.**member = value;
+  options.** member = value;
   return true;
 }
 

@@ -55,9 +55,9 @@ struct ParameterSpec
   const char* flag;      // command-line option
   const char* valueName; // placeholder in the usage text ("N", "F"); empty for flags
   ParameterKind kind;
-  double minimum;      // inclusive; for a Choice 0
-  double maximum;      // inclusive; Unbounded when there is none
-  double defaultValue; // for a Choice the index, for a Boolean 0 or 1; unused for Text
+  double minimum;          // inclusive; for a Choice 0
+  double maximum;          // inclusive; Unbounded when there is none
+  double defaultValue;     // for a Choice the index, for a Boolean 0 or 1; unused for Text
   const char* defaultText; // for Text
   MethodScope scope;
   const char* help; // one line: what it does (the default and range are added where shown)

@@ -54,7 +54,8 @@ vtkXMLDataElement* childWithTagSuffix(vtkXMLDataElement* element, const std::str
   for (int i = 0; i < element->GetNumberOfNestedElements(); ++i)
   {
     const std::string tag = element->GetNestedElement(i)->GetName();
-    if (tag.size() >= suffix.size() && tag.compare(tag.size() - suffix.size(), suffix.size(), suffix) == 0)
+    if (tag.size() >= suffix.size() &&
+      tag.compare(tag.size() - suffix.size(), suffix.size(), suffix) == 0)
     {
       return element->GetNestedElement(i);
     }
@@ -75,7 +76,8 @@ void checkRange(const ParameterSpec& spec, vtkXMLDataElement* property)
     spec.name << ": XML min " << (minimum ? minimum : "(none)") << ", table " << spec.minimum);
   const char* maximum = range->GetAttribute("max");
   const bool bounded = spec.maximum < naturalMaximum(spec.kind);
-  CGMESH_CHECK((maximum != nullptr) == bounded, spec.name << ": XML max and table maximum disagree");
+  CGMESH_CHECK(
+    (maximum != nullptr) == bounded, spec.name << ": XML max and table maximum disagree");
   if (maximum && bounded)
   {
     CGMESH_CHECK(std::atof(maximum) == spec.maximum,
@@ -119,8 +121,8 @@ void checkDomain(const ParameterSpec& spec, vtkXMLDataElement* property)
       vtkXMLDataElement* entry = enumeration->GetNestedElement(i);
       const int value = std::atoi(entry->GetAttribute("value"));
       const std::string label = entry->GetAttribute("text");
-      CGMESH_CHECK(value == i && i < static_cast<int>(spec.choices.size()) &&
-          label == spec.choices[i].label,
+      CGMESH_CHECK(
+        value == i && i < static_cast<int>(spec.choices.size()) && label == spec.choices[i].label,
         spec.name << ": XML entry " << value << " '" << label << "'");
     }
   }
@@ -159,8 +161,7 @@ void checkXml(const char* fileName)
   parser->SetFileName(fileName);
   CGMESH_CHECK(parser->Parse() == 1, "cannot parse " << fileName);
   vtkXMLDataElement* root = parser->GetRootElement();
-  vtkXMLDataElement* proxy =
-    root ? findNamed(root, "CoarseGrainedMeshAdaptation") : nullptr;
+  vtkXMLDataElement* proxy = root ? findNamed(root, "CoarseGrainedMeshAdaptation") : nullptr;
   CGMESH_CHECK(proxy != nullptr, "no CoarseGrainedMeshAdaptation proxy in " << fileName);
   if (!proxy)
   {
@@ -210,7 +211,8 @@ void checkFilterDefaultsAndClamps()
     CGMESH_CHECK(filter->GetParameterValue(spec.name) == spec.defaultValue,
       spec.name << ": filter default " << filter->GetParameterValue(spec.name));
     filter->SetParameterValue(spec.name, spec.minimum - 1);
-    CGMESH_CHECK(filter->GetParameterValue(spec.name) == spec.minimum, spec.name << ": not clamped up");
+    CGMESH_CHECK(
+      filter->GetParameterValue(spec.name) == spec.minimum, spec.name << ": not clamped up");
     if (std::isfinite(spec.maximum))
     {
       filter->SetParameterValue(spec.name, spec.maximum + 1);

@@ -4,8 +4,8 @@
 // boundary area, region volumes and material-interface area, and leave its input untouched.
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
-#include "Validation/MeshValidation.h"
 #include "TetGenWorkers.h"
+#include "Validation/MeshValidation.h"
 
 #define TETLIBRARY
 #include <tetgen.h>

@@ -2,10 +2,9 @@
 // provenance and bit-identical output for any thread count.
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
-#include "Validation/MeshValidation.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
-
+#include "Validation/MeshValidation.h"
 
 using namespace cgmesh;
 
@@ -104,7 +103,8 @@ void test_every_coloring_gives_identical_output_across_threads()
     const AdaptationResult serial = refine(input, 64, 1, 1, options);
     checkRefinedCube(input, serial, 1);
     CHECK(cgmesh_test::identicalResults(serial, refine(input, 64, 2, 1, options)));
-    CHECK_EQUAL(serial.summary.partitionsPerColor.size(), static_cast<std::size_t>(serial.summary.numberOfColors));
+    CHECK_EQUAL(serial.summary.partitionsPerColor.size(),
+      static_cast<std::size_t>(serial.summary.numberOfColors));
     std::int64_t cells = 0;
     for (std::int64_t count : serial.summary.cellsPerColor)
     {

@@ -2,15 +2,15 @@
 // ones give the same colours for any thread count and schedule; the balanced ones are better
 // balanced than first-fit greedy.
 #include "Coloring/ColoringSupport.h"
-#include "CubeGenerator.h"
-#include "Partitioning/MeshPartitioner.h"
-#include "ParallelFor.h"
 #include "Coloring/PartitionColoring.h"
+#include "CubeGenerator.h"
+#include "ParallelFor.h"
+#include "Partitioning/MeshPartitioner.h"
 #include "TestHarness.h"
 
 #include <algorithm>
-#include <stdexcept>
 #include <random>
+#include <stdexcept>
 
 using namespace cgmesh;
 

@@ -2,11 +2,11 @@
 // identical output for any thread count and for serialised TetGen calls, the volume bound inside
 // partitions, and the template fallback when TetGen fails.
 #include "AdaptationDriver.h"
-#include "CubeGenerator.h"
 #include "Core/Geometry.h"
-#include "Validation/MeshValidation.h"
+#include "CubeGenerator.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
+#include "Validation/MeshValidation.h"
 
 #include <algorithm>
 #include <array>
@@ -219,13 +219,14 @@ void test_volume_bound_inside_partitions()
   {
     const bool touchesInterface = nearConstrained[tet[0]] || nearConstrained[tet[1]] ||
       nearConstrained[tet[2]] || nearConstrained[tet[3]];
-    const bool above = signedVolume6(result.mesh, tet) / 6.0 > result.summary.plan.volumeBound * (1 + 1e-9);
+    const bool above =
+      signedVolume6(result.mesh, tet) / 6.0 > result.summary.plan.volumeBound * (1 + 1e-9);
     (touchesInterface ? atInterface : interior) += 1;
     (touchesInterface ? interfaceAbove : interiorAbove) += above;
     if (!touchesInterface)
     {
-      worstInteriorRatio =
-        std::max(worstInteriorRatio, signedVolume6(result.mesh, tet) / 6.0 / result.summary.plan.volumeBound);
+      worstInteriorRatio = std::max(worstInteriorRatio,
+        signedVolume6(result.mesh, tet) / 6.0 / result.summary.plan.volumeBound);
     }
   }
   std::cout << "tets above the volume bound: " << interiorAbove << " of " << interior
@@ -246,8 +247,8 @@ void test_failed_partitions_fall_back_to_templates()
   const AdaptationResult result = run(input, options);
   checkConserved(input, result);
   CHECK_EQUAL(result.summary.delaunayFallbacks, 4);
-  CHECK((std::multiset<int>(result.summary.fallbackPartitions.begin(), result.summary.fallbackPartitions.end()) ==
-    std::multiset<int>{ 0, 0, 7, 7 }));
+  CHECK((std::multiset<int>(result.summary.fallbackPartitions.begin(),
+           result.summary.fallbackPartitions.end()) == std::multiset<int>{ 0, 0, 7, 7 }));
   int namingWarnings = 0;
   for (const AdaptationWarning& warning : result.summary.warnings)
   {

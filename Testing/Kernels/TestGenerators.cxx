@@ -1,8 +1,8 @@
 // The benchmark meshes: cube sizes, and the FinFET's materials in both generators.
 #include "CubeGenerator.h"
 #include "FinFetGenerator.h"
-#include "Validation/MeshValidation.h"
 #include "TestHarness.h"
+#include "Validation/MeshValidation.h"
 
 #include <cmath>
 

@@ -2,9 +2,9 @@
 // shared edge, later ones heal it) and outbox healing, driven colour by colour by hand.
 #include "Core/EdgeSplits.h"
 #include "Merge/MeshMerge.h"
-#include "Validation/MeshValidation.h"
 #include "Refinement/PartitionRefiner.h"
 #include "TestHarness.h"
+#include "Validation/MeshValidation.h"
 
 #include <cmath>
 

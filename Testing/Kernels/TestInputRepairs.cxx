@@ -2,8 +2,8 @@
 // and the input is never modified.
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
-#include "Validation/MeshValidation.h"
 #include "TestHarness.h"
+#include "Validation/MeshValidation.h"
 
 #include <cmath>
 #include <limits>
@@ -100,8 +100,8 @@ void test_inverted_tets_are_reoriented()
     }
     AdaptationResult result;
     CHECK(refineAndCheck(mesh, templateOptions(8), result).ok());
-    CHECK_EQUAL(
-      result.summary.reorientedTets, static_cast<std::int64_t>((mesh.tets.size() + every - 1) / every));
+    CHECK_EQUAL(result.summary.reorientedTets,
+      static_cast<std::int64_t>((mesh.tets.size() + every - 1) / every));
     const MeshReport report = inspectMesh(result.mesh);
     CHECK_EQUAL(report.invertedTets, 0);
     CHECK_CLOSE(report.volume, volume, 1e-12);

@@ -2,12 +2,12 @@
 // multi-material device: conformity, conservation, fixed interfaces, better worst tets,
 // identical output across thread counts.
 #include "AdaptationDriver.h"
+#include "Core/TetQuality.h"
 #include "FinFetGenerator.h"
-#include "Validation/MeshValidation.h"
 #include "Improvement/QualityImprover.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
-#include "Core/TetQuality.h"
+#include "Validation/MeshValidation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -161,15 +161,16 @@ void test_device_refinement_with_improvement()
   {
     CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
   }
-  CHECK(improved.summary.edgeRemovals + improved.summary.faceSwaps + improved.summary.vertexMoves > 0);
+  CHECK(
+    improved.summary.edgeRemovals + improved.summary.faceSwaps + improved.summary.vertexMoves > 0);
   const double worstPlain = worstMeanRatio(plain.mesh);
   const double worstImproved = worstMeanRatio(improved.mesh);
   std::cout << "worst mean ratio " << worstPlain << " -> " << worstImproved
             << "; 1st percentile of the minimum dihedral angle "
             << percentileMinDihedral(plain.mesh, 0.01) << " -> "
-            << percentileMinDihedral(improved.mesh, 0.01) << " degrees; " << improved.summary.edgeRemovals
-            << " edge removals, " << improved.summary.faceSwaps << " face swaps, " << improved.summary.vertexMoves
-            << " vertex moves\n";
+            << percentileMinDihedral(improved.mesh, 0.01) << " degrees; "
+            << improved.summary.edgeRemovals << " edge removals, " << improved.summary.faceSwaps
+            << " face swaps, " << improved.summary.vertexMoves << " vertex moves\n";
   CHECK(worstImproved > worstPlain);
   CHECK(percentileMinDihedral(improved.mesh, 0.01) >= percentileMinDihedral(plain.mesh, 0.01));
   CHECK_EQUAL(improved.nearFormerInterface.size(), improved.mesh.tets.size());

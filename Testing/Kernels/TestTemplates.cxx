@@ -1,9 +1,9 @@
 // Template refinement of a single tet: every split pattern tiles its parent with positive tets,
 // and two tets sharing a face always triangulate it identically.
 #include "Core/Geometry.h"
-#include "Validation/MeshValidation.h"
 #include "Refinement/TemplateTable.h"
 #include "TestHarness.h"
+#include "Validation/MeshValidation.h"
 
 #include <algorithm>
 #include <array>

@@ -4,8 +4,8 @@
 #ifndef cgmesh_PartitionColoring_h
 #define cgmesh_PartitionColoring_h
 
-#include "Partitioning/PartitionGraph.h"
 #include "Core/Status.h"
+#include "Partitioning/PartitionGraph.h"
 
 #include <cstdint>
 #include <functional>

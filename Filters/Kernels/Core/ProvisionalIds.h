@@ -40,8 +40,7 @@ inline PointId finalId(PointId id, PointId firstGlobalId)
 inline const double* pointCoordinates(
   const std::vector<double>& global, const std::vector<double>& provisional, PointId id)
 {
-  return isProvisional(id) ? provisional.data() + 3 * provisionalIndex(id)
-                           : global.data() + 3 * id;
+  return isProvisional(id) ? provisional.data() + 3 * provisionalIndex(id) : global.data() + 3 * id;
 }
 
 // The position of a vertex in the global order that decides face diagonals. Provisional ids come

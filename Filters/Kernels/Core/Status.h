@@ -11,10 +11,10 @@ namespace cgmesh
 
 enum class ErrorKind
 {
-  None,         // success
-  InvalidInput, // the mesh cannot be refined as given (bad ids, non-finite points, flat tets)
+  None,          // success
+  InvalidInput,  // the mesh cannot be refined as given (bad ids, non-finite points, flat tets)
   InvalidOption, // an option is out of range or does not fit the input
-  SizeLimit,    // the size guard refused a forecast refinement
+  SizeLimit,     // the size guard refused a forecast refinement
   OutOfMemory,
   TaskFailed, // a parallel task threw: the message is the task's own
   Internal    // a kernel broke its own contract (an improper colouring, a missing template)

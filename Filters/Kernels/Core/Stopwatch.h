@@ -15,7 +15,10 @@ public:
   {
   }
 
-  double seconds() const { return std::chrono::duration<double>(Clock::now() - this->Start).count(); }
+  double seconds() const
+  {
+    return std::chrono::duration<double>(Clock::now() - this->Start).count();
+  }
 
   // Seconds since the start, and starts again.
   double lap()

@@ -194,7 +194,8 @@ Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
   }
   if (partitionsPerRegion < 1)
   {
-    return Status::failure(ErrorKind::InvalidOption, "the number of partitions per region must be at least 1");
+    return Status::failure(
+      ErrorKind::InvalidOption, "the number of partitions per region must be at least 1");
   }
   std::vector<int> regionIds = mesh.regions;
   std::sort(regionIds.begin(), regionIds.end());

@@ -8,8 +8,8 @@
 #include "Core/PartitionMesh.h"
 #include "Core/ProvisionalIds.h"
 #include "Core/Status.h"
-#include "Refinement/TemplateTable.h"
 #include "Core/TetMesh.h"
+#include "Refinement/TemplateTable.h"
 
 #include <unordered_set>
 #include <vector>

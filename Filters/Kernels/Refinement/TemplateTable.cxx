@@ -434,8 +434,8 @@ TemplateTable::TemplateTable()
     this->Full[diagonal] = buildFullSplit(diagonal);
     if (totalOrientation(this->Full[diagonal]) != referenceOrientation)
     {
-      this->Validity =
-        Status::failure(ErrorKind::Internal, "invalid full-split template " + std::to_string(diagonal));
+      this->Validity = Status::failure(
+        ErrorKind::Internal, "invalid full-split template " + std::to_string(diagonal));
       return;
     }
   }

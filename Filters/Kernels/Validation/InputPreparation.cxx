@@ -32,9 +32,9 @@ Status checkCoordinates(const TetMesh& mesh)
   }
   if (nonFinite > 0)
   {
-    return Status::failure(ErrorKind::InvalidInput, std::to_string(nonFinite) +
-      " points have NaN or infinite coordinates (the first is point " + std::to_string(first) +
-      ")");
+    return Status::failure(ErrorKind::InvalidInput,
+      std::to_string(nonFinite) + " points have NaN or infinite coordinates (the first is point " +
+        std::to_string(first) + ")");
   }
   return Status::success();
 }
@@ -65,9 +65,10 @@ Status orientTets(TetMesh& mesh, InputRepairs& repairs)
   }
   if (degenerate > 0)
   {
-    return Status::failure(ErrorKind::InvalidInput, std::to_string(degenerate) +
-      " tetrahedra have zero volume or repeat a point (the first is cell " + std::to_string(first) +
-      "); remove them before refining");
+    return Status::failure(ErrorKind::InvalidInput,
+      std::to_string(degenerate) +
+        " tetrahedra have zero volume or repeat a point (the first is cell " +
+        std::to_string(first) + "); remove them before refining");
   }
   return Status::success();
 }
