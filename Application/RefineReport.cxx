@@ -117,6 +117,28 @@ void printImprovement(const RefineStatistics& statistics, std::ostream& stream)
          << 100.0 * improveShare(statistics) << " % of total)\n";
 }
 
+// "3 (delaunay-fallback 2, partitions-reduced 1)": the warnings by kind, in order of first use.
+void printWarningCounts(const RefineStatistics& statistics, std::ostream& stream)
+{
+  std::vector<std::pair<WarningKind, int>> counts;
+  for (const AdaptationWarning& warning : statistics.warnings)
+  {
+    auto found = std::find_if(counts.begin(), counts.end(),
+      [&warning](const auto& entry) { return entry.first == warning.kind; });
+    if (found == counts.end())
+      counts.emplace_back(warning.kind, 1);
+    else
+      ++found->second;
+  }
+  stream << std::setw(24) << "warnings" << statistics.warnings.size();
+  for (std::size_t index = 0; index < counts.size(); ++index)
+  {
+    stream << (index ? ", " : " (") << warningKindName(counts[index].first) << " "
+           << counts[index].second << (index + 1 == counts.size() ? ")" : "");
+  }
+  stream << "\n";
+}
+
 void printQualityRow(const char* name, const QualitySummary& summary, std::ostream& stream)
 {
   stream << std::setw(24) << name << std::right << std::setw(10) << summary.tets;
@@ -223,6 +245,7 @@ void collectFilterStatistics(
   statistics.faceSwaps = summary.faceSwaps;
   statistics.vertexMoves = summary.vertexMoves;
   statistics.partitionTaskSeconds = summary.partitionTaskSeconds;
+  statistics.warnings = summary.warnings;
   statistics.colorOfPartition.assign(
     summary.colorOfPartition.begin(), summary.colorOfPartition.end());
   collectQualitySummaries(output, statistics);
@@ -269,6 +292,7 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
            << "\n";
   }
   printImprovement(statistics, stream);
+  printWarningCounts(statistics, stream);
   printQualitySummaries(statistics, stream);
   stream << "\n"
          << std::setw(24) << "phase"
@@ -319,6 +343,16 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
     file << (index ? ", " : "") << statistics.partitionTaskSeconds[index];
   }
   file << "],\n";
+  file << "  \"warnings\": [";
+  for (size_t index = 0; index < statistics.warnings.size(); ++index)
+  {
+    const AdaptationWarning& warning = statistics.warnings[index];
+    file << (index ? ",\n    " : "\n    ")
+         << "{\"kind\": " << jsonString(warningKindName(warning.kind))
+         << ", \"partition\": " << warning.partition << ", \"text\": " << jsonString(warning.text)
+         << "}";
+  }
+  file << (statistics.warnings.empty() ? "],\n" : "\n  ],\n");
   file << "  \"seconds\": {";
   for (size_t index = 0; index < statistics.seconds.size(); ++index)
   {

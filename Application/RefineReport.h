@@ -2,6 +2,7 @@
 #ifndef cgmesh_RefineReport_h
 #define cgmesh_RefineReport_h
 
+#include "AdaptationMessages.h"
 #include "Core/Status.h"
 
 #include <cstdint>
@@ -56,6 +57,7 @@ struct RefineStatistics
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
   std::vector<double> partitionTaskSeconds; // iteration * partitions + partition
+  std::vector<AdaptationWarning> warnings;  // the run's typed warnings, in order
   std::vector<std::int64_t> colorOfPartition;
   QualitySummary allTets;
   QualitySummary interiorTets;      // NearFormerInterface 0

@@ -38,9 +38,10 @@
  * colouring (ColoringAlgorithm, by name), the colour populations (PartitionsPerColor and
  * CellsPerColor, one tuple per colour), ColorBalance (largest colour over the mean, in partitions),
  * the improvement counts (EdgeRemovals, FaceSwaps, VertexMoves)
- * and the seconds spent per phase (PartitionSeconds, GraphSeconds, ColorSeconds, HealSeconds,
- * AdaptSeconds, PostSeconds, ImproveSeconds, MergeSeconds, QualitySeconds, TotalSeconds). The
- * output does not depend on NumberOfThreads.
+ * and the seconds spent per phase (PrepareSeconds, PartitionSeconds, GraphSeconds, ColorSeconds,
+ * HealSeconds, AdaptSeconds, ImproveSeconds, PostSeconds, MergeSeconds, QualitySeconds,
+ * TotalSeconds; each second is charged to one phase only). Progress never decreases. The output
+ * does not depend on NumberOfThreads.
  */
 #ifndef vtkCoarseGrainedMeshAdaptation_h
 #define vtkCoarseGrainedMeshAdaptation_h

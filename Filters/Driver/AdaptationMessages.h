@@ -18,6 +18,25 @@ enum class WarningKind
   DelaunayFallback        // TetGen failed on a partition, refined by templates instead
 };
 
+// The kind's name in reports ("delaunay-fallback").
+inline const char* warningKindName(WarningKind kind)
+{
+  switch (kind)
+  {
+    case WarningKind::PartitionsReduced:
+      return "partitions-reduced";
+    case WarningKind::InvertedTetsReoriented:
+      return "inverted-tets-reoriented";
+    case WarningKind::CoincidentPointsMerged:
+      return "coincident-points-merged";
+    case WarningKind::UnusedPointsRemoved:
+      return "unused-points-removed";
+    case WarningKind::DelaunayFallback:
+      return "delaunay-fallback";
+  }
+  return "unknown";
+}
+
 struct AdaptationWarning
 {
   WarningKind kind;

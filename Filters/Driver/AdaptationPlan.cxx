@@ -1,5 +1,6 @@
 #include "AdaptationPlan.h"
 
+#include "Coloring/PartitionColoring.h"
 #include "Core/Geometry.h"
 #include "ParallelFor.h"
 #include "Refinement/TetGenRefiner.h"
@@ -35,6 +36,10 @@ Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool empt
   if (options.partitionByRegion && options.partitionsPerRegion < 1)
   {
     return invalidOption("the number of partitions per region must be at least 1");
+  }
+  if (!makeColoring(options.coloring))
+  {
+    return invalidOption("unknown colouring '" + options.coloring + "'");
   }
   if (options.method == RefinementMethod::Template && !(options.maximumEdgeLength > 0) &&
     !(options.edgeLengthFactor > 0))

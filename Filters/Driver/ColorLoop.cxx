@@ -2,9 +2,8 @@
 
 #include "Coloring/PartitionColoring.h"
 #include "Core/Geometry.h"
-#include "ParallelFor.h"
-
 #include "Core/Stopwatch.h"
+#include "ParallelFor.h"
 
 #include <algorithm>
 

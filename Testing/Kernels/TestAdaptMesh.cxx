@@ -164,13 +164,19 @@ void test_bad_options_are_refused()
   AdaptationOptions options;
   AdaptationResult result;
   options.coloring = "no-such-colouring";
-  CHECK(!adaptMesh(input, options, result).ok());
+  Status status = adaptMesh(input, options, result);
+  CHECK(status.kind() == ErrorKind::InvalidOption);
   CHECK(result.mesh.tets.empty());
   options = AdaptationOptions();
   options.edgeLengthFactor = 0;
-  CHECK(!adaptMesh(input, options, result).ok());
+  CHECK(adaptMesh(input, options, result).kind() == ErrorKind::InvalidOption);
+  options = AdaptationOptions();
+  options.maximumNumberOfCells = 10;
+  status = adaptMesh(input, options, result);
+  CHECK(status.kind() == ErrorKind::SizeLimit);
+  CHECK(status.message().find("MaximumNumberOfCells") != std::string::npos);
   input.tets.push_back({ 0, 1, 2, 999 });
-  CHECK(!adaptMesh(input, AdaptationOptions(), result).ok());
+  CHECK(adaptMesh(input, AdaptationOptions(), result).kind() == ErrorKind::InvalidInput);
 }
 
 void test_abort_between_colours()
