@@ -10,29 +10,45 @@ namespace cgmesh
 {
 
 TetLocator::TetLocator(const std::vector<Tet>& tets, CoordinatesOf coordinatesOf)
-  : Tets(tets)
-  , Coordinates(std::move(coordinatesOf))
 {
+  const std::size_t count = tets.size();
+  this->Corners.resize(12 * count);
+  this->Boxes.resize(6 * count);
+  this->Volumes6.resize(count);
   double high[3];
   for (int axis = 0; axis < 3; ++axis)
   {
     this->Low[axis] = std::numeric_limits<double>::max();
     high[axis] = -std::numeric_limits<double>::max();
   }
-  for (const Tet& tet : tets)
+  for (std::size_t t = 0; t < count; ++t)
   {
-    for (PointId p : tet)
+    double* corners = this->Corners.data() + 12 * t;
+    double* box = this->Boxes.data() + 6 * t;
+    for (int axis = 0; axis < 3; ++axis)
     {
-      const double* x = this->Coordinates(p);
+      box[axis] = std::numeric_limits<double>::max();
+      box[3 + axis] = -std::numeric_limits<double>::max();
+    }
+    for (int i = 0; i < 4; ++i)
+    {
+      const double* x = coordinatesOf(tets[t][i]);
       for (int axis = 0; axis < 3; ++axis)
       {
-        this->Low[axis] = std::min(this->Low[axis], x[axis]);
-        high[axis] = std::max(high[axis], x[axis]);
+        corners[3 * i + axis] = x[axis];
+        box[axis] = std::min(box[axis], x[axis]);
+        box[3 + axis] = std::max(box[3 + axis], x[axis]);
       }
+    }
+    this->Volumes6[t] = signedVolume6(corners, corners + 3, corners + 6, corners + 9);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      this->Low[axis] = std::min(this->Low[axis], box[axis]);
+      high[axis] = std::max(high[axis], box[3 + axis]);
     }
   }
   // About one tet per grid cell, or fewer: a tet's bounding box spans several cells.
-  this->Resolution = std::max(1, std::min(96, static_cast<int>(1.5 * std::cbrt(tets.size()))));
+  this->Resolution = std::max(1, std::min(96, static_cast<int>(1.5 * std::cbrt(count))));
   for (int axis = 0; axis < 3; ++axis)
   {
     const double extent = high[axis] - this->Low[axis];
@@ -40,23 +56,18 @@ TetLocator::TetLocator(const std::vector<Tet>& tets, CoordinatesOf coordinatesOf
   }
   this->Buckets.resize(
     static_cast<std::size_t>(this->Resolution) * this->Resolution * this->Resolution);
-  for (std::size_t t = 0; t < tets.size(); ++t)
+  auto clampIndex = [this](double value)
   {
+    return std::max(0, std::min(this->Resolution - 1, static_cast<int>(std::floor(value))));
+  };
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    const double* box = this->Boxes.data() + 6 * t;
     int first[3], last[3];
     for (int axis = 0; axis < 3; ++axis)
     {
-      double low = std::numeric_limits<double>::max(), top = -low;
-      for (PointId p : tets[t])
-      {
-        low = std::min(low, this->Coordinates(p)[axis]);
-        top = std::max(top, this->Coordinates(p)[axis]);
-      }
-      auto clampIndex = [this](double value)
-      {
-        return std::max(0, std::min(this->Resolution - 1, static_cast<int>(std::floor(value))));
-      };
-      first[axis] = clampIndex((low - this->Low[axis]) / this->CellSize[axis]);
-      last[axis] = clampIndex((top - this->Low[axis]) / this->CellSize[axis]);
+      first[axis] = clampIndex((box[axis] - this->Low[axis]) / this->CellSize[axis]);
+      last[axis] = clampIndex((box[3 + axis] - this->Low[axis]) / this->CellSize[axis]);
     }
     for (int k = first[2]; k <= last[2]; ++k)
     {
@@ -86,17 +97,10 @@ std::size_t TetLocator::cellIndex(const double* point) const
 
 bool TetLocator::mayContain(std::size_t tet, const double* point) const
 {
-  const Tet& corners = this->Tets[tet];
+  const double* box = this->Boxes.data() + 6 * tet;
   for (int axis = 0; axis < 3; ++axis)
   {
-    double low = this->Coordinates(corners[0])[axis], high = low;
-    for (int i = 1; i < 4; ++i)
-    {
-      const double value = this->Coordinates(corners[i])[axis];
-      low = std::min(low, value);
-      high = std::max(high, value);
-    }
-    if (point[axis] < low || point[axis] > high)
+    if (point[axis] < box[axis] || point[axis] > box[3 + axis])
     {
       return false;
     }
@@ -106,13 +110,9 @@ bool TetLocator::mayContain(std::size_t tet, const double* point) const
 
 std::array<double, 4> TetLocator::barycentric(std::size_t tet, const double* point) const
 {
-  const Tet& corners = this->Tets[tet];
-  const double* p[4];
-  for (int i = 0; i < 4; ++i)
-  {
-    p[i] = this->Coordinates(corners[i]);
-  }
-  const double volume = signedVolume6(p[0], p[1], p[2], p[3]);
+  const double* corners = this->Corners.data() + 12 * tet;
+  const double* p[4] = { corners, corners + 3, corners + 6, corners + 9 };
+  const double volume = this->Volumes6[tet];
   std::array<double, 4> weights;
   for (int i = 0; i < 4; ++i)
   {
@@ -158,7 +158,7 @@ TetLocator::Location TetLocator::locate(const double* point) const
     *std::min_element(location.barycentric.begin(), location.barycentric.end());
   if (candidates.empty() || minimum < -1e-9)
   {
-    std::vector<std::size_t> all(this->Tets.size());
+    std::vector<std::size_t> all(this->Volumes6.size());
     for (std::size_t t = 0; t < all.size(); ++t)
     {
       all[t] = t;

@@ -35,8 +35,11 @@ private:
   bool mayContain(std::size_t tet, const double* point) const; // bounding-box test
   std::size_t cellIndex(const double* point) const;
 
-  const std::vector<Tet>& Tets;
-  CoordinatesOf Coordinates;
+  // Per tet, copied once: the corners' coordinates (12 values), the bounding box (low xyz, high
+  // xyz) and six times the signed volume. Queries then touch one contiguous record per candidate.
+  std::vector<double> Corners;
+  std::vector<double> Boxes;
+  std::vector<double> Volumes6;
   double Low[3], CellSize[3];
   int Resolution = 1;
   std::vector<std::vector<std::size_t>> Buckets; // tets whose bounding box meets each grid cell

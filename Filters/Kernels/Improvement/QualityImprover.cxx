@@ -493,18 +493,25 @@ bool Improver::swapFace(int t, int skip)
 // worst tet around it; otherwise leaves it.
 bool Improver::smoothVertex(int v)
 {
-  const std::vector<int> star = this->Incident[v];
+  const std::vector<int>& star = this->Incident[v]; // smoothing changes no incidence
   if (star.empty())
   {
     return false;
   }
-  double centre[3] = { 0, 0, 0 };
-  int neighbours = 0;
-  std::vector<int> seen;
   double before = std::numeric_limits<double>::max();
   for (int t : star)
   {
     before = std::min(before, this->Qualities[t]);
+  }
+  if (before >= this->Parameters.targetQuality)
+  {
+    return false; // only poor tets are worth a move: most vertices stop here
+  }
+  double centre[3] = { 0, 0, 0 };
+  int neighbours = 0;
+  std::vector<int> seen;
+  for (int t : star)
+  {
     for (int w : this->Tets[t])
     {
       if (w != v && std::find(seen.begin(), seen.end(), w) == seen.end())
@@ -517,10 +524,6 @@ bool Improver::smoothVertex(int v)
         ++neighbours;
       }
     }
-  }
-  if (before >= this->Parameters.targetQuality)
-  {
-    return false;
   }
   const double largestBefore = this->largestVolume(star);
   double* position = this->Points.at(this->IdOf[v]);
