@@ -64,9 +64,10 @@ inline const std::vector<ParameterSpec>& parameterTable()
   using S = MethodScope;
   using O = AdaptationOptions;
   static const std::vector<ParameterSpec> table = {
-    { "NumberOfPartitions", "--partitions", "N", K::Integer, 1, INT_MAX, 1024, "", S::Any,
-      "METIS partitions; reduced, with a warning, to the number of tets of a smaller mesh; not "
-      "used with PartitionByRegion",
+    { "NumberOfPartitions", "--partitions", "N", K::Integer, 0, INT_MAX, 0, "", S::Any,
+      "METIS partitions; 0 = automatic: 1024 for Template, for Delaunay one per about 30,000 "
+      "forecast output tets (64 to 1024); reduced to the number of tets of a smaller mesh (with "
+      "a warning when requested); not used with PartitionByRegion",
       &O::numberOfPartitions },
     { "RegionArrayName", "--region-array", "NAME", K::Text, 0, 0, 0, "", S::Any,
       "numeric cell array of material/region ids (empty or None: one region)",

@@ -14,6 +14,11 @@ namespace cgmesh
 namespace
 {
 
+constexpr int AutomaticTemplatePartitions = 1024;
+constexpr double DelaunayTetsPerPartition = 30000;
+constexpr int MinimumAutomaticPartitions = 64;
+constexpr int MaximumAutomaticPartitions = 1024;
+
 Status invalidOption(std::string message)
 {
   return Status::failure(ErrorKind::InvalidOption, std::move(message));
@@ -25,9 +30,9 @@ Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool empt
   {
     return invalidOption("the number of iterations must not be negative");
   }
-  if (!options.partitionByRegion && options.numberOfPartitions < 1)
+  if (!options.partitionByRegion && options.numberOfPartitions < 0)
   {
-    return invalidOption("the number of partitions must be at least 1");
+    return invalidOption("the number of partitions must be at least 0 (0: automatic)");
   }
   if (options.partitionByRegion && !hasRegions && !empty)
   {
@@ -100,8 +105,30 @@ int partitionsByRegion(const TetMesh& input, int partitionsPerRegion)
   return static_cast<int>(total);
 }
 
-int resolvePartitions(
-  const TetMesh& input, const AdaptationOptions& options, std::vector<AdaptationWarning>& warnings)
+// NumberOfPartitions 0. Templates: 1024, plenty of colour-sized work for many cores. Delaunay:
+// one partition per about 30,000 forecast output tets, between 64 and 1024. Each partition's
+// interface is split by templates before TetGen and TetGen refines towards it, so many small
+// partitions make more tets and more TetGen calls; on the Kuhn cube N=25 at V = 0.1 x the mean
+// volume, 64 partitions gave 1.88 M tets in 18.5 s on one thread against 2.21 M in 32 s with
+// 1024. The count never depends on the thread count, so neither does the output.
+int automaticPartitions(const TetMesh& input, const AdaptationOptions& options, double volumeBound)
+{
+  if (options.method != RefinementMethod::Delaunay)
+  {
+    return AutomaticTemplatePartitions;
+  }
+  double volume = 0;
+  for (const Tet& tet : input.tets)
+  {
+    volume += std::abs(signedVolume6(input, tet)) / 6.0;
+  }
+  const double partitions = forecastDelaunayTets(volume, volumeBound) / DelaunayTetsPerPartition;
+  return static_cast<int>(std::lround(std::min<double>(
+    MaximumAutomaticPartitions, std::max<double>(MinimumAutomaticPartitions, partitions))));
+}
+
+int resolvePartitions(const TetMesh& input, const AdaptationOptions& options, double volumeBound,
+  std::vector<AdaptationWarning>& warnings)
 {
   const CellId tets = input.numberOfTets();
   if (tets == 0)
@@ -111,6 +138,12 @@ int resolvePartitions(
   if (options.partitionByRegion)
   {
     return partitionsByRegion(input, options.partitionsPerRegion);
+  }
+  if (options.numberOfPartitions == 0)
+  {
+    // Automatic: never more partitions than tets, and no warning, as nothing was asked.
+    return static_cast<int>(
+      std::min<CellId>(tets, automaticPartitions(input, options, volumeBound)));
   }
   if (options.numberOfPartitions > tets)
   {
@@ -171,7 +204,7 @@ AdaptationPlan resolvePlan(
       ? options.maximumEdgeLength
       : options.edgeLengthFactor * meanTetEdgeLength(input);
   }
-  plan.partitions = resolvePartitions(input, options, warnings);
+  plan.partitions = resolvePartitions(input, options, plan.volumeBound, warnings);
   // About as many boxes as refinement partitions, so that a box is about a partition's size.
   plan.boxesPerAxis =
     std::max(1, static_cast<int>(std::lround(std::cbrt(std::max(1, plan.partitions)))));

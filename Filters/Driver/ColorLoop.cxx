@@ -243,7 +243,7 @@ Status checkForecastSize(
         forecast[p] = predictTemplateTetCount(partition, context);
         return;
       }
-      // TetGen's tets average about a third of the bound (measured), plus what is there.
+      // What TetGen will make, plus what is there.
       double volume = 0;
       for (const Tet& tet : partition.tets)
       {
@@ -253,7 +253,7 @@ Status checkForecastSize(
           6.0;
       }
       forecast[p] = static_cast<std::int64_t>(partition.tets.size()) +
-        static_cast<std::int64_t>(3.0 * volume / setup.delaunay.maximumVolume);
+        static_cast<std::int64_t>(forecastDelaunayTets(volume, setup.delaunay.maximumVolume));
     });
   std::int64_t total = 0;
   for (std::int64_t count : forecast)

@@ -170,7 +170,7 @@ void test_abort()
 void test_defaultsAndClamping()
 {
   vtkNew<vtkCoarseGrainedMeshAdaptation> filter;
-  CGMESH_CHECK(filter->GetNumberOfPartitions() == 1024, "NumberOfPartitions default");
+  CGMESH_CHECK(filter->GetNumberOfPartitions() == 0, "NumberOfPartitions default (automatic)");
   CGMESH_CHECK(filter->GetNumberOfIterations() == 1, "NumberOfIterations default");
   CGMESH_CHECK(filter->GetMaximumEdgeLength() == 0.0, "MaximumEdgeLength default");
   CGMESH_CHECK(filter->GetEdgeLengthFactor() == 0.5, "EdgeLengthFactor default");
@@ -189,11 +189,11 @@ void test_defaultsAndClamping()
     filter->GetNumberOfImprovementPasses() == 20, "improvement passes not clamped to 20");
   filter->ImproveQualityOff();
   CGMESH_CHECK(!filter->GetImproveQuality(), "ImproveQualityOff");
-  filter->SetNumberOfPartitions(0);
+  filter->SetNumberOfPartitions(-5);
   filter->SetNumberOfIterations(-3);
   filter->SetNumberOfThreads(-1);
   filter->SetPartitionsPerRegion(0);
-  CGMESH_CHECK(filter->GetNumberOfPartitions() == 1, "NumberOfPartitions not clamped to 1");
+  CGMESH_CHECK(filter->GetNumberOfPartitions() == 0, "NumberOfPartitions not clamped to 0");
   CGMESH_CHECK(filter->GetNumberOfIterations() == 1, "NumberOfIterations not clamped to 1");
   CGMESH_CHECK(filter->GetNumberOfThreads() == 0, "NumberOfThreads not clamped to 0");
   CGMESH_CHECK(filter->GetPartitionsPerRegion() == 1, "PartitionsPerRegion not clamped to 1");

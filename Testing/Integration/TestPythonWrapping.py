@@ -60,7 +60,7 @@ def cell_array_values(grid, name):
 
 def main():
     adaptation = vtkCoarseGrainedMeshAdaptation()
-    check(adaptation.GetNumberOfPartitions() == 1024, "NumberOfPartitions default")
+    check(adaptation.GetNumberOfPartitions() == 0, "NumberOfPartitions default (automatic)")
     check(adaptation.GetMethodName() == "template", "Method default")
     check(adaptation.IsA("vtkUnstructuredGridAlgorithm"), "base class")
 

@@ -157,6 +157,29 @@ void test_partition_count_clamped_to_tets()
   checkRefinedCube(input, result, 1);
 }
 
+// NumberOfPartitions 0: 1024 for templates; for Delaunay one per 30,000 forecast tets (3 x volume
+// / V) within [64, 1024]; never more than the tets, and never a warning.
+void test_automatic_partition_count()
+{
+  TetMesh input;
+  CHECK(generateKuhnCube(8, input).ok()); // 3072 tets, unit volume
+  std::vector<AdaptationWarning> warnings;
+  AdaptationOptions options;
+  CHECK_EQUAL(options.numberOfPartitions, 0);
+  CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 1024);
+  options.method = RefinementMethod::Delaunay;
+  options.maximumVolume = 1e-5; // forecast 300,000 tets
+  CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 64);
+  options.maximumVolume = 1e-7; // 30 M tets
+  CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 1000);
+  options.maximumVolume = 1e-8;
+  CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 1024);
+  CHECK(generateKuhnCube(2, input).ok()); // 48 tets
+  options.method = RefinementMethod::Template;
+  CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 48);
+  CHECK(warnings.empty());
+}
+
 void test_bad_options_are_refused()
 {
   TetMesh input;
@@ -203,6 +226,7 @@ int main()
   test_every_coloring_gives_identical_output_across_threads();
   test_partition_by_region();
   test_partition_count_clamped_to_tets();
+  test_automatic_partition_count();
   test_bad_options_are_refused();
   test_abort_between_colours();
   return cgmesh_test::finish("TestAdaptMesh");

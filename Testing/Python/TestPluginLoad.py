@@ -60,7 +60,7 @@ def main():
     wavelet = Wavelet(WholeExtent=[0, 4, 0, 4, 0, 4])
     tetrahedra = Tetrahedralize(Input=wavelet)
     adaptation = CoarseGrainedMeshAdaptation(Input=tetrahedra)  # noqa: F821 (from LoadPlugin)
-    check(adaptation.NumberOfPartitions == 1024, "NumberOfPartitions default")
+    check(adaptation.NumberOfPartitions == 0, "NumberOfPartitions default (automatic)")
     check(adaptation.RegionArrayName == "None", "RegionArrayName default")
     check(adaptation.ColoringAlgorithm == "Greedy-LU",
           "ColoringAlgorithm default: %s" % adaptation.ColoringAlgorithm)

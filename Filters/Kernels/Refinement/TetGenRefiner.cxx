@@ -335,6 +335,11 @@ std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& 
 
 } // namespace
 
+double forecastDelaunayTets(double volume, double maximumVolume)
+{
+  return 3.0 * volume / maximumVolume;
+}
+
 double interfaceEdgeLengthForVolume(double maximumVolume)
 {
   return std::cbrt(6.0 * std::sqrt(2.0) * maximumVolume);

@@ -27,6 +27,10 @@ struct DelaunayParameters
 // regular tetrahedron of that volume, (6 sqrt(2) V)^(1/3).
 double interfaceEdgeLengthForVolume(double maximumVolume);
 
+// About how many tets TetGen makes of `volume` under the bound: its tets average about a third
+// of the bound (measured on cubes and FinFETs). Used by the size guard and the partition count.
+double forecastDelaunayTets(double volume, double maximumVolume);
+
 // Runs TetGen with the given switches on `in`, filling `out`; returns an empty string on success,
 // else why it failed. The driver runs the calls in worker processes (see TetGenWorkers.h).
 using TetGenRunner =
