@@ -10,40 +10,24 @@ namespace cgmesh
 void findConstrainedFaces(const PartitionMesh& partition, std::vector<Face>& boundaryFaces,
   std::vector<Face>& regionInterfaceFaces)
 {
-  struct FaceOfTet
-  {
-    Face corners;
-    std::size_t tet;
-  };
-  std::vector<FaceOfTet> faces;
-  faces.reserve(4 * partition.tets.size());
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
-  {
-    for (int skip = 0; skip < 4; ++skip)
+  const std::size_t firstBoundary = boundaryFaces.size();
+  const std::size_t firstInterface = regionInterfaceFaces.size();
+  forEachDistinctFace(partition.tets.empty() ? nullptr : partition.tets[0].data(),
+    partition.tets.size(),
+    [&](const Face& face, std::size_t first, std::size_t second, std::size_t count)
     {
-      faces.push_back({ sortedFace(partition.tets[t].data(), skip), t });
-    }
-  }
-  std::sort(faces.begin(), faces.end(),
-    [](const FaceOfTet& a, const FaceOfTet& b) { return a.corners < b.corners; });
-  for (std::size_t i = 0; i < faces.size();)
-  {
-    std::size_t j = i + 1;
-    while (j < faces.size() && faces[j].corners == faces[i].corners)
-    {
-      ++j;
-    }
-    if (j - i == 1)
-    {
-      boundaryFaces.push_back(faces[i].corners);
-    }
-    else if (!partition.regions.empty() &&
-      partition.regions[faces[i].tet] != partition.regions[faces[i + 1].tet])
-    {
-      regionInterfaceFaces.push_back(faces[i].corners);
-    }
-    i = j;
-  }
+      if (count == 1)
+      {
+        boundaryFaces.push_back(face);
+      }
+      else if (!partition.regions.empty() && partition.regions[first] != partition.regions[second])
+      {
+        regionInterfaceFaces.push_back(face);
+      }
+    });
+  // In corner order, whatever the grouping order: TetGen receives them in this order.
+  std::sort(boundaryFaces.begin() + firstBoundary, boundaryFaces.end());
+  std::sort(regionInterfaceFaces.begin() + firstInterface, regionInterfaceFaces.end());
 }
 
 } // namespace cgmesh

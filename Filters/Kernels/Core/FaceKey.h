@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace cgmesh
 {
@@ -29,6 +32,64 @@ std::array<Index, 3> sortedFace(const Index* corners, int skip)
   }
   std::sort(face.begin(), face.end());
   return face;
+}
+
+// Calls visit(face, first, second, count) once per distinct face of the tets: `face` its sorted
+// corners, `first` and `second` the first two tets holding it (second is first when count is 1),
+// `count` how many hold it. Faces are grouped in an open-addressing hash table, linear in the
+// number of tets (sorting the faces was the most expensive step of improvement). The visiting
+// order follows the table: callers that need an order sort what they keep.
+template <typename Index, typename Visit>
+void forEachDistinctFace(const Index* tetCorners, std::size_t tetCount, Visit&& visit)
+{
+  struct Slot
+  {
+    std::array<Index, 3> face;
+    std::uint32_t first;
+    std::uint32_t second;
+    std::uint32_t count = 0; // 0: empty
+  };
+  std::size_t capacity = 16;
+  while (capacity < 8 * tetCount) // at most half full
+  {
+    capacity *= 2;
+  }
+  std::vector<Slot> slots(capacity);
+  const std::size_t mask = capacity - 1;
+  for (std::size_t t = 0; t < tetCount; ++t)
+  {
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      const std::array<Index, 3> face = sortedFace(tetCorners + 4 * t, skip);
+      std::uint64_t h = static_cast<std::uint64_t>(face[0]) * 0x9E3779B97F4A7C15ull;
+      h ^= static_cast<std::uint64_t>(face[1]) * 0xC2B2AE3D27D4EB4Full;
+      h ^= static_cast<std::uint64_t>(face[2]) * 0x165667B19E3779F9ull;
+      h ^= h >> 29;
+      for (std::size_t at = h & mask;; at = (at + 1) & mask)
+      {
+        Slot& slot = slots[at];
+        if (slot.count == 0)
+        {
+          slot = { face, static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(t), 1 };
+          break;
+        }
+        if (slot.face == face)
+        {
+          slot.second = slot.count == 1 ? static_cast<std::uint32_t>(t) : slot.second;
+          ++slot.count;
+          break;
+        }
+      }
+    }
+  }
+  for (const Slot& slot : slots)
+  {
+    if (slot.count > 0)
+    {
+      visit(slot.face, static_cast<std::size_t>(slot.first), static_cast<std::size_t>(slot.second),
+        static_cast<std::size_t>(slot.count));
+    }
+  }
 }
 
 } // namespace cgmesh

@@ -145,38 +145,18 @@ std::map<int, double> regionVolumes(const tetgenio& io)
 // The faces TetGen must have kept: hull faces and faces between two attributes, sorted.
 std::vector<std::array<int, 3>> hullAndInterfaceFaces(const tetgenio& io)
 {
-  struct FaceOfTet
-  {
-    std::array<int, 3> corners;
-    int tet;
-  };
-  std::vector<FaceOfTet> faces;
-  faces.reserve(4 * static_cast<std::size_t>(io.numberoftetrahedra));
-  for (int t = 0; t < io.numberoftetrahedra; ++t)
-  {
-    for (int skip = 0; skip < 4; ++skip)
-    {
-      faces.push_back({ sortedFace(io.tetrahedronlist + 4 * t, skip), t });
-    }
-  }
-  std::sort(faces.begin(), faces.end(),
-    [](const FaceOfTet& a, const FaceOfTet& b) { return a.corners < b.corners; });
   std::vector<std::array<int, 3>> kept;
-  for (std::size_t i = 0; i < faces.size();)
-  {
-    std::size_t j = i + 1;
-    while (j < faces.size() && faces[j].corners == faces[i].corners)
+  forEachDistinctFace(io.tetrahedronlist, static_cast<std::size_t>(io.numberoftetrahedra),
+    [&](const std::array<int, 3>& face, std::size_t first, std::size_t second, std::size_t count)
     {
-      ++j;
-    }
-    if (j - i == 1 ||
-      (j - i == 2 &&
-        io.tetrahedronattributelist[faces[i].tet] != io.tetrahedronattributelist[faces[i + 1].tet]))
-    {
-      kept.push_back(faces[i].corners);
-    }
-    i = j;
-  }
+      if (count == 1 ||
+        (count == 2 &&
+          io.tetrahedronattributelist[first] != io.tetrahedronattributelist[second]))
+      {
+        kept.push_back(face);
+      }
+    });
+  std::sort(kept.begin(), kept.end());
   return kept;
 }
 
