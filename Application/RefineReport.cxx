@@ -238,6 +238,7 @@ void collectFilterStatistics(
   statistics.fallbackPartitions.assign(
     summary.fallbackPartitions.begin(), summary.fallbackPartitions.end());
   statistics.tetgenPoints = summary.tetgenPoints;
+  statistics.tetgenRetries = summary.tetgenRetries;
   statistics.partitionsPerColor = summary.partitionsPerColor;
   statistics.cellsPerColor = summary.cellsPerColor;
   statistics.colorBalance = summary.colorBalance;
@@ -285,6 +286,7 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
   {
     stream << std::setw(24) << "volume bound" << statistics.volumeBound << "\n"
            << std::setw(24) << "tetgen points" << statistics.tetgenPoints << "\n"
+           << std::setw(24) << "tetgen retries" << statistics.tetgenRetries << "\n"
            << std::setw(24) << "delaunay fallbacks" << statistics.delaunayFallbacks
            << (statistics.fallbackPartitions.empty()
                   ? std::string()
@@ -332,6 +334,7 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"edgeLengthThreshold\": " << statistics.edgeLengthThreshold << ",\n"
        << "  \"volumeBound\": " << statistics.volumeBound << ",\n"
        << "  \"tetgenPoints\": " << statistics.tetgenPoints << ",\n"
+       << "  \"tetgenRetries\": " << statistics.tetgenRetries << ",\n"
        << "  \"delaunayFallbacks\": " << statistics.delaunayFallbacks << ",\n"
        << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ")
        << "],\n";

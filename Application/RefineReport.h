@@ -45,6 +45,7 @@ struct RefineStatistics
   std::int64_t delaunayFallbacks = 0;           // partition refinements that fell back to templates
   std::vector<std::int64_t> fallbackPartitions; // their partitions
   std::int64_t tetgenPoints = 0;                // Steiner points TetGen inserted
+  std::int64_t tetgenRetries = 0;               // partitions TetGen needed a second attempt for
   bool partitionByRegion = false;
   int partitionsPerRegion = 1;
   std::string coloring;

@@ -34,7 +34,8 @@
  * between refinement partitions), and field data
  * with the colour, partition and thread counts, the (interface) edge length threshold, the method
  * (Method, by name), VolumeBound, DelaunayFallbacks, FallbackPartitions (one tuple per fallback)
- * and TetGenPoints (all 0 or empty for Template), the
+ * TetGenPoints and TetGenRetries (partitions whose first TetGen call failed and was made again with
+ * the tets in reverse order; all 0 or empty for Template), the
  * colouring (ColoringAlgorithm, by name), the colour populations (PartitionsPerColor and
  * CellsPerColor, one tuple per colour), ColorBalance (largest colour over the mean, in partitions),
  * the improvement counts (EdgeRemovals, FaceSwaps, VertexMoves)

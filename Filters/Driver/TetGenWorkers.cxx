@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <new>
+#include <fcntl.h>
 #include <sys/socket.h>
 #include <sys/time.h>
 #include <sys/wait.h>
@@ -225,6 +226,14 @@ bool TetGenWorkerPool::start(Worker& worker)
       }
     }
     ::close(sockets[0]);
+    // TetGen's assertion messages would reach the user's terminal for failures the host reports
+    // itself, and often recovers from by a second attempt.
+    const int devnull = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (devnull >= 0)
+    {
+      ::dup2(devnull, STDERR_FILENO);
+      ::close(devnull);
+    }
     serveRequests(sockets[1]);
   }
   ::close(sockets[1]);

@@ -116,7 +116,9 @@ void checkDelaunayFieldData(const TestCase& testCase, vtkUnstructuredGrid* outpu
   vtkDataArray* fallbackPartitions = output->GetFieldData()->GetArray("FallbackPartitions");
   CGMESH_CHECK(fallbackPartitions && fallbackPartitions->GetNumberOfTuples() == fallbacks,
     "FallbackPartitions does not hold one tuple per fallback");
-  CGMESH_CHECK(fallbacks < 0.1 * testCase.numberOfPartitions, fallbacks << " fallbacks");
+  // TetGen's aborts on the lattice's degenerate point sets are recovered by the second attempt.
+  CGMESH_CHECK(fallbacks == 0, fallbacks << " fallbacks");
+  const double retries = cgmesh_test::fieldValue(output, "TetGenRetries");
   CGMESH_CHECK(cgmesh_test::fieldValue(output, "TetGenPoints") > 0, "TetGen inserted no points");
 
   vtkIdType aboveBound = 0;
@@ -129,7 +131,8 @@ void checkDelaunayFieldData(const TestCase& testCase, vtkUnstructuredGrid* outpu
       std::abs(vtkTetra::ComputeVolume(corners[0], corners[1], corners[2], corners[3]));
     aboveBound += volume > bound * (1 + 1e-9) ? 1 : 0;
   }
-  std::cout << output->GetNumberOfCells() << " tets, " << fallbacks << " fallbacks, "
+  std::cout << output->GetNumberOfCells() << " tets, " << fallbacks << " fallbacks, " << retries
+            << " TetGen retries, "
             << 100.0 * aboveBound / output->GetNumberOfCells() << "% above the bound\n";
 }
 

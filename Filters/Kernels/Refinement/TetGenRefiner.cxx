@@ -57,7 +57,8 @@ public:
   }
 
   // Fills TetGen's input from the partition and the faces it must keep.
-  void prepareInput(tetgenio& in, const std::vector<Face>& keptFaces)
+  // `reversed` hands TetGen the tets in reverse order (a second attempt, see refineWithTetGen).
+  void prepareInput(tetgenio& in, const std::vector<Face>& keptFaces, bool reversed)
   {
     for (const Tet& tet : this->Partition.tets)
     {
@@ -84,12 +85,14 @@ public:
     in.tetrahedronattributelist = new REAL[in.numberoftetrahedra];
     for (int t = 0; t < in.numberoftetrahedra; ++t)
     {
+      const std::size_t source = reversed ? in.numberoftetrahedra - 1 - t : t;
       for (int k = 0; k < 4; ++k)
       {
-        in.tetrahedronlist[4 * t + k] = this->Numbering.localOfId.at(this->Partition.tets[t][k]);
+        in.tetrahedronlist[4 * t + k] =
+          this->Numbering.localOfId.at(this->Partition.tets[source][k]);
       }
       in.tetrahedronattributelist[t] =
-        this->Partition.regions.empty() ? 0.0 : this->Partition.regions[t];
+        this->Partition.regions.empty() ? 0.0 : this->Partition.regions[source];
     }
     // The faces to keep, each its own facet (a distinct marker): TetGen merges coplanar
     // neighbouring boundary triangles otherwise and may flip their shared edge, which the
@@ -298,17 +301,26 @@ std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& 
   {
     return "simulated TetGen failure";
   }
-  TetGenSession session(partition, context, refinement);
-  tetgenio in, out;
-  session.prepareInput(in, keptFaces);
-  std::string failure = runTetGen(in, tetgenSwitches(parameters), out);
-  if (failure.empty())
+  // TetGen 1.5 aborts on some inputs with many coplanar and cospherical points (its symbolic
+  // perturbation asserts in insphere_s); the same tets in another order take other insertion
+  // paths, so a failed call is tried once more with the tets reversed before falling back.
+  std::string failure;
+  for (const bool reversed : { false, true })
   {
-    failure = session.validate(in, out);
-  }
-  if (failure.empty())
-  {
-    session.adoptOutput(out, partition, refinement, outcome);
+    TetGenSession session(partition, context, refinement);
+    tetgenio in, out;
+    session.prepareInput(in, keptFaces, reversed);
+    failure = runTetGen(in, tetgenSwitches(parameters), out);
+    if (failure.empty())
+    {
+      failure = session.validate(in, out);
+    }
+    if (failure.empty())
+    {
+      session.adoptOutput(out, partition, refinement, outcome);
+      return failure;
+    }
+    outcome.retried = true;
   }
   return failure;
 }

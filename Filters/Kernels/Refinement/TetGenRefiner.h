@@ -39,6 +39,7 @@ using TetGenRunner =
 struct DelaunayOutcome
 {
   bool fellBack = false;         // TetGen failed; the partition was template-refined instead
+  bool retried = false;          // the first TetGen call failed, a second attempt was made
   std::string reason;            // why, when it fell back
   std::int64_t tetgenPoints = 0; // Steiner points TetGen inserted
 };
