@@ -19,8 +19,9 @@
  * RadiusEdgeRatio, a with V). A partition on which TetGen fails is refined by templates instead,
  * with a warning naming it.
  *
- * With ImproveQuality (default on), each partition's tets are improved after refinement, in the
- * same colour loop: edge removal, 2->3 face swaps and Laplacian smoothing with rollback, applied to
+ * With ImproveQuality (default on), each Template partition's tets are improved after refinement,
+ * in the same colour loop (Delaunay partitions, whose interiors TetGen made good, are left to the
+ * sweeps below): edge removal, 2->3 face swaps and Laplacian smoothing with rollback, applied to
  * tets whose mean ratio 12 (3V)^(2/3) / sum of squared edge lengths (1 = regular tetrahedron) is
  * below 0.5, and kept only when the worst mean ratio of the tets changed rises. Vertices on
  * partition interfaces, on the domain boundary and on material interfaces stay fixed. A second

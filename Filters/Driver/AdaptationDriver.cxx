@@ -126,7 +126,11 @@ ColorLoopSetup refinementSetup(
   setup.delaunay.maximumVolume = plan.volumeBound;
   setup.delaunay.radiusEdgeRatio = options.radiusEdgeRatio;
   setup.maximumNumberOfCells = options.maximumNumberOfCells;
-  setup.improve = options.improveQuality;
+  // Delaunay partitions are not improved on their own: TetGen's interiors are good and their
+  // poor tets lie on the frozen interfaces, which the box sweeps reach anyway. Measured on the
+  // Big cube (94 partitions, 2 threads): the same quality (minimum dihedral p1 21.0 against
+  // 20.8 degrees, edge ratio p99 3.00 against 2.98) in 19% less time.
+  setup.improve = options.improveQuality && options.method == RefinementMethod::Template;
   setup.improvement.passes = options.improvementPasses;
   setup.improvement.maximumVolume = plan.improvementVolumeBound;
   return setup;

@@ -106,9 +106,9 @@ Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
   const AdaptationOptions& options, int boxesPerAxis, AdaptationState& state,
   AdaptationSummary& summary, PhaseReporter& reporter)
 {
-  if (summary.poorTets == 0)
+  if (refinementSetup.improve && summary.poorTets == 0)
   {
-    return Status::success(); // nothing was below the target: no seam to work on
+    return Status::success(); // improvement in partitions saw no poor tet: no seam to work on
   }
   // Box faces freeze vertices in their turn: a second layout shifted by half a box frees them.
   for (int sweepIndex = 0; sweepIndex < 2; ++sweepIndex)

@@ -3,7 +3,7 @@
 // into box-shaped partitions that cut across the refinement partitions, so that most former
 // interfaces lie inside a partition, and runs quality improvement once more over a new colouring;
 // then again over boxes shifted by half a box, whose insides hold the first layout's box faces.
-// Skipped when refinement left no tet below the improvement target.
+// Skipped when improvement inside the partitions (templates) saw no tet below the target.
 #ifndef cgmesh_ImprovementSweep_h
 #define cgmesh_ImprovementSweep_h
 
