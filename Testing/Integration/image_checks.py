@@ -1,24 +1,48 @@
 """Helpers shared by the rendering tests: a private X server and a not-blank check for PNGs."""
 import os
+import socket
 import subprocess
+import time
 
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 
-def start_xvfb(geometry="1280x1024x24"):
+def start_xvfb(geometry="1280x1024x24", attempts=3):
     """Starts Xvfb on a display number it picks itself (-displayfd: no race between tests that
-    start servers at the same time) and returns (process, ":N")."""
-    read_end, write_end = os.pipe()
-    server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", geometry,
-                               "-nolisten", "tcp"], pass_fds=(write_end,),
-                              stderr=subprocess.DEVNULL)
-    os.close(write_end)
-    with os.fdopen(read_end) as reader:
-        number = reader.readline().strip()
-    if not number:
-        server.kill()
-        raise RuntimeError("Xvfb did not start")
-    return server, ":" + number
+    start servers at the same time) and returns (process, ":N") once its socket accepts
+    connections. A server that exits or never opens its socket (seen on fresh machines while an
+    outer xvfb-run starts its own) is replaced, up to `attempts` times."""
+    last_error = "Xvfb did not start"
+    for _ in range(attempts):
+        read_end, write_end = os.pipe()
+        server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", geometry,
+                                   "-nolisten", "tcp"], pass_fds=(write_end,),
+                                  stderr=subprocess.DEVNULL)
+        os.close(write_end)
+        with os.fdopen(read_end) as reader:
+            number = reader.readline().strip()
+        if number and _accepts_connections(server, number):
+            return server, ":" + number
+        last_error = "Xvfb on display :%s did not accept connections" % (number or "?")
+        stop(server)
+    raise RuntimeError(last_error)
+
+
+def _accepts_connections(server, number, seconds=10.0):
+    """True once the server's Unix socket takes a connection, False if it exits or times out."""
+    path = "/tmp/.X11-unix/X" + number
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        if server.poll() is not None:
+            return False
+        with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as probe:
+            try:
+                probe.connect(path)
+                return True
+            except OSError:
+                pass
+        time.sleep(0.05)
+    return False
 
 
 def stop(process, seconds=10):
