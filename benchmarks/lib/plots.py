@@ -1,4 +1,4 @@
-"""PNG plots of a results.json (matplotlib, Agg): the thesis' figures 4.5 to 4.8."""
+"""PNG plots of a results.json (matplotlib, Agg): colour populations, strong scaling, quality."""
 import os
 
 import matplotlib

@@ -296,7 +296,7 @@ def array_check_lines(results):
 
 def write(results, folder):
     top = max(results["threads"])
-    lines = ["# cgmesh benchmark study (thesis chapter 4.4)", ""]
+    lines = ["# cgmesh benchmark study", ""]
     lines += machine_lines(results)
     lines += ["", "Reproduce: `benchmarks/run%s` (README, Benchmarks). Everything below comes "
               "from `results.json` in this folder; `benchmarks/run --replot results.json` "
