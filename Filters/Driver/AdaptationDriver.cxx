@@ -65,9 +65,12 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   const AdaptationPlan& plan = summary.plan;
   reporter.enter(Phase::Partition);
   int partitions = plan.partitions;
+  PartitioningOptions partitioning;
+  partitioning.contiguous = options.method == RefinementMethod::Delaunay;
+  partitioning.parallelFor = parallelForOn(plan.threads);
   Status status = options.partitionByRegion
     ? partitionByRegion(input, options.partitionsPerRegion, partitionOfCell, partitions)
-    : partitionMesh(input, plan.partitions, partitionOfCell);
+    : partitionMesh(input, plan.partitions, partitionOfCell, partitioning);
   if (!status.ok())
   {
     return status;

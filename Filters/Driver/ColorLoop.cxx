@@ -281,12 +281,7 @@ Status colorPartitions(const PartitionGraph& graph, const std::string& coloringN
   {
     return Status::failure(ErrorKind::InvalidOption, "unknown colouring '" + coloringName + "'");
   }
-  const ParallelFor parallelFor =
-    [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
-  {
-    return runParallel(threads, count, body);
-  };
-  Status status = coloring->color(graph, parallelFor, colorOfPartition);
+  Status status = coloring->color(graph, parallelForOn(threads), colorOfPartition);
   if (status.ok() && !isProperColoring(graph, colorOfPartition))
   {
     return Status::failure(ErrorKind::Internal,

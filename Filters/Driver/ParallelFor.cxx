@@ -51,4 +51,10 @@ Status runParallel(int threads, std::int64_t count, const std::function<void(std
   return failed ? Status::failure(ErrorKind::TaskFailed, message) : Status::success();
 }
 
+ParallelFor parallelForOn(int threads)
+{
+  return [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
+  { return runParallel(threads, count, body); };
+}
+
 } // namespace cgmesh

@@ -3,6 +3,7 @@
 #define cgmesh_ParallelFor_h
 
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 
 #include <cstdint>
 #include <functional>
@@ -19,6 +20,9 @@ int currentThreadIndex();
 // Calls body(i) for i in [0, count) on `threads` threads, dynamically scheduled. Exceptions never
 // leave the parallel region: the first one is reported as a failed Status after the loop.
 Status runParallel(int threads, std::int64_t count, const std::function<void(std::int64_t)>& body);
+
+// runParallel() on `threads` threads as the runner kernels take (Core/Tasks.h).
+ParallelFor parallelForOn(int threads);
 
 } // namespace cgmesh
 

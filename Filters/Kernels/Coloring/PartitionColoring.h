@@ -5,6 +5,7 @@
 #define cgmesh_PartitionColoring_h
 
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Partitioning/PartitionGraph.h"
 
 #include <cstdint>
@@ -16,11 +17,8 @@
 namespace cgmesh
 {
 
-// Runs body(i) for every i in [0, count), possibly concurrently, and returns a failure when a call
-// threw. Supplied by the driver, which owns the threads, so that colourings with parallel rounds
-// stay free of any threading library. A colouring returns such a failure as it is.
-using ParallelFor =
-  std::function<Status(std::int64_t count, const std::function<void(std::int64_t)>& body)>;
+// Colourings with parallel rounds get a ParallelFor (Core/Tasks.h) from the driver and return its
+// failures as they are.
 
 class PartitionColoring
 {

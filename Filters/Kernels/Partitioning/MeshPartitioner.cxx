@@ -5,6 +5,8 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <utility>
+#include <cmath>
 #include <array>
 #include <limits>
 #include <string>
@@ -89,8 +91,9 @@ bool isConnected(const DualGraph& graph)
   return visited == count;
 }
 
-// METIS k-way on a graph in compressed rows; contiguous parts when the graph is connected.
-Status partitionGraphKway(const DualGraph& graph, int parts, std::vector<int>& partOfVertex)
+// METIS k-way on a graph in compressed rows; with `contiguous`, connected parts when the graph is.
+Status partitionGraphKway(
+  const DualGraph& graph, int parts, std::vector<int>& partOfVertex, bool contiguous = true)
 {
   const std::int64_t vertexTotal = static_cast<std::int64_t>(graph.offsets.size()) - 1;
   partOfVertex.assign(vertexTotal, 0);
@@ -114,7 +117,7 @@ Status partitionGraphKway(const DualGraph& graph, int parts, std::vector<int>& p
   options[METIS_OPTION_NUMBERING] = 0;
   options[METIS_OPTION_SEED] = 1;
   // Contiguity is only possible for a connected graph (asking anyway makes METIS complain).
-  options[METIS_OPTION_CONTIG] = isConnected(graph) ? 1 : 0;
+  options[METIS_OPTION_CONTIG] = contiguous && isConnected(graph) ? 1 : 0;
   auto run = [&]()
   {
     return METIS_PartGraphKway(&vertexCount, &constraintCount, offsets.data(), neighbours.data(),
@@ -164,9 +167,117 @@ DualGraph inducedSubgraph(
   return sub;
 }
 
+// Shares of `total` for parts of the given sizes: proportional, at most the size, at least 1 for
+// a non-empty part (largest remainders first, ties to the lower index). Needs total <= sum.
+std::vector<int> proportionalShares(const std::vector<std::int64_t>& sizes, int total)
+{
+  std::int64_t sum = 0;
+  for (std::int64_t size : sizes)
+  {
+    sum += size;
+  }
+  std::vector<int> shares(sizes.size(), 0);
+  std::vector<std::pair<double, std::size_t>> remainders;
+  int given = 0;
+  for (std::size_t i = 0; i < sizes.size(); ++i)
+  {
+    const double exact = static_cast<double>(total) * sizes[i] / sum;
+    shares[i] = static_cast<int>(std::min<double>(sizes[i], std::max(sizes[i] > 0 ? 1.0 : 0.0,
+      std::floor(exact))));
+    given += shares[i];
+    remainders.emplace_back(-(exact - std::floor(exact)), i);
+  }
+  std::sort(remainders.begin(), remainders.end());
+  // Hand out what is missing (or take back what the minimum of 1 overspent), round robin.
+  for (std::size_t k = 0; given != total; k = (k + 1) % remainders.size())
+  {
+    const std::size_t i = remainders[k].second;
+    if (given < total && shares[i] < sizes[i])
+    {
+      ++shares[i];
+      ++given;
+    }
+    else if (given > total && shares[i] > 1)
+    {
+      --shares[i];
+      --given;
+    }
+  }
+  return shares;
+}
+
+// Two levels: METIS cuts the graph into about sqrt(parts) parts, then each of those into its
+// share of `parts`; the second level's calls are independent and run through parallelFor.
+Status partitionHierarchically(const DualGraph& graph, int parts,
+  const PartitioningOptions& options, std::vector<int>& partOfVertex)
+{
+  const std::size_t vertexCount = graph.offsets.size() - 1;
+  const int coarseCount = std::max(2, static_cast<int>(std::lround(std::sqrt(parts))));
+  std::vector<int> coarsePart;
+  Status status = partitionGraphKway(graph, coarseCount, coarsePart, options.contiguous);
+  if (!status.ok())
+  {
+    return status;
+  }
+  std::vector<std::vector<CellId>> members(coarseCount);
+  std::vector<CellId> indexInPart(vertexCount);
+  for (std::size_t v = 0; v < vertexCount; ++v)
+  {
+    indexInPart[v] = static_cast<CellId>(members[coarsePart[v]].size());
+    members[coarsePart[v]].push_back(static_cast<CellId>(v));
+  }
+  std::vector<std::int64_t> sizes(coarseCount);
+  for (int c = 0; c < coarseCount; ++c)
+  {
+    sizes[c] = static_cast<std::int64_t>(members[c].size());
+  }
+  const std::vector<int> shares = proportionalShares(sizes, parts);
+  std::vector<std::vector<int>> local(coarseCount);
+  std::vector<Status> outcomes(coarseCount, Status::success());
+  status = options.parallelFor(coarseCount,
+    [&](std::int64_t c)
+    {
+      DualGraph sub;
+      sub.offsets.push_back(0);
+      for (CellId v : members[c])
+      {
+        for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
+        {
+          const CellId w = graph.neighbours[k];
+          if (coarsePart[w] == c)
+          {
+            sub.neighbours.push_back(indexInPart[w]);
+          }
+        }
+        sub.offsets.push_back(static_cast<std::int64_t>(sub.neighbours.size()));
+      }
+      outcomes[c] = partitionGraphKway(sub, shares[c], local[c], options.contiguous);
+    });
+  for (const Status& outcome : outcomes)
+  {
+    status = status.ok() ? outcome : status;
+  }
+  if (!status.ok())
+  {
+    return status;
+  }
+  partOfVertex.assign(vertexCount, 0);
+  int first = 0;
+  for (int c = 0; c < coarseCount; ++c)
+  {
+    for (std::size_t i = 0; i < members[c].size(); ++i)
+    {
+      partOfVertex[members[c][i]] = first + local[c][i];
+    }
+    first += shares[c];
+  }
+  return Status::success();
+}
+
 } // namespace
 
-Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell)
+Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell,
+  const PartitioningOptions& options)
 {
   const CellId tetCount = mesh.numberOfTets();
   partitionOfCell.assign(tetCount, 0);
@@ -182,7 +293,12 @@ Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<in
   {
     return Status::success();
   }
-  return partitionGraphKway(buildDualGraph(mesh), numberOfPartitions, partitionOfCell);
+  const DualGraph graph = buildDualGraph(mesh);
+  if (numberOfPartitions >= options.hierarchicalFrom)
+  {
+    return partitionHierarchically(graph, numberOfPartitions, options, partitionOfCell);
+  }
+  return partitionGraphKway(graph, numberOfPartitions, partitionOfCell, options.contiguous);
 }
 
 Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
