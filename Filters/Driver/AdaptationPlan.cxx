@@ -117,11 +117,7 @@ int automaticPartitions(const TetMesh& input, const AdaptationOptions& options, 
   {
     return AutomaticTemplatePartitions;
   }
-  double volume = 0;
-  for (const Tet& tet : input.tets)
-  {
-    volume += std::abs(signedVolume6(input, tet)) / 6.0;
-  }
+  const double volume = meanTetVolume(input) * static_cast<double>(input.numberOfTets());
   const double partitions = forecastDelaunayTets(volume, volumeBound) / DelaunayTetsPerPartition;
   return static_cast<int>(std::lround(std::min<double>(
     MaximumAutomaticPartitions, std::max<double>(MinimumAutomaticPartitions, partitions))));
