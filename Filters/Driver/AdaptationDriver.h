@@ -31,11 +31,11 @@ struct AdaptationSummary
   std::int64_t delaunayFallbacks = 0;           // partition refinements that fell back to templates
   std::vector<int> fallbackPartitions;          // their partitions (with repeats across iterations)
   std::int64_t tetgenPoints = 0;                // Steiner points TetGen inserted
-  std::int64_t tetgenRetries = 0; // partition refinements whose first TetGen call failed
-  bool concurrentTetGen = false;                // TetGen calls overlapped (in worker processes)
-  std::int64_t reorientedTets = 0;              // inverted input tets that were turned around
-  std::int64_t mergedPoints = 0;                // input points merged into a coincident one
-  std::int64_t edgeRemovals = 0;                // quality improvement operations
+  std::int64_t tetgenRetries = 0;  // partition refinements whose first TetGen call failed
+  bool concurrentTetGen = false;   // TetGen calls overlapped (in worker processes)
+  std::int64_t reorientedTets = 0; // inverted input tets that were turned around
+  std::int64_t mergedPoints = 0;   // input points merged into a coincident one
+  std::int64_t edgeRemovals = 0;   // quality improvement operations
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
   std::int64_t poorTets = 0; // tets below the improvement target when first looked at

@@ -54,7 +54,9 @@ Status runParallel(int threads, std::int64_t count, const std::function<void(std
 ParallelFor parallelForOn(int threads)
 {
   return [threads](std::int64_t count, const std::function<void(std::int64_t)>& body)
-  { return runParallel(threads, count, body); };
+  {
+    return runParallel(threads, count, body);
+  };
 }
 
 } // namespace cgmesh

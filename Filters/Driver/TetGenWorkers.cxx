@@ -7,8 +7,8 @@
 #include <csignal>
 #include <cstdint>
 #include <cstring>
-#include <new>
 #include <fcntl.h>
+#include <new>
 #include <sys/socket.h>
 #include <sys/time.h>
 #include <sys/wait.h>

@@ -132,8 +132,8 @@ void checkDelaunayFieldData(const TestCase& testCase, vtkUnstructuredGrid* outpu
     aboveBound += volume > bound * (1 + 1e-9) ? 1 : 0;
   }
   std::cout << output->GetNumberOfCells() << " tets, " << fallbacks << " fallbacks, " << retries
-            << " TetGen retries, "
-            << 100.0 * aboveBound / output->GetNumberOfCells() << "% above the bound\n";
+            << " TetGen retries, " << 100.0 * aboveBound / output->GetNumberOfCells()
+            << "% above the bound\n";
 }
 
 } // namespace

@@ -66,7 +66,9 @@ void test_failing_second_level_is_reported()
   PartitioningOptions options;
   options.hierarchicalFrom = 100;
   options.parallelFor = [](std::int64_t, const std::function<void(std::int64_t)>&)
-  { return Status::failure(ErrorKind::TaskFailed, "task broke"); };
+  {
+    return Status::failure(ErrorKind::TaskFailed, "task broke");
+  };
   std::vector<int> partitionOfCell;
   const Status status = partitionMesh(mesh, 400, partitionOfCell, options);
   CHECK(status.kind() == ErrorKind::TaskFailed);

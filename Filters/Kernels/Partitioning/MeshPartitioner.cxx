@@ -5,12 +5,12 @@
 #include <metis.h>
 
 #include <algorithm>
-#include <utility>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <tuple>
+#include <utility>
 
 namespace cgmesh
 {
@@ -182,8 +182,8 @@ std::vector<int> proportionalShares(const std::vector<std::int64_t>& sizes, int 
   for (std::size_t i = 0; i < sizes.size(); ++i)
   {
     const double exact = static_cast<double>(total) * sizes[i] / sum;
-    shares[i] = static_cast<int>(std::min<double>(sizes[i], std::max(sizes[i] > 0 ? 1.0 : 0.0,
-      std::floor(exact))));
+    shares[i] = static_cast<int>(
+      std::min<double>(sizes[i], std::max(sizes[i] > 0 ? 1.0 : 0.0, std::floor(exact))));
     given += shares[i];
     remainders.emplace_back(-(exact - std::floor(exact)), i);
   }

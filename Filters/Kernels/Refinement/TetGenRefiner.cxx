@@ -153,8 +153,7 @@ std::vector<std::array<int, 3>> hullAndInterfaceFaces(const tetgenio& io)
     [&](const std::array<int, 3>& face, std::size_t first, std::size_t second, std::size_t count)
     {
       if (count == 1 ||
-        (count == 2 &&
-          io.tetrahedronattributelist[first] != io.tetrahedronattributelist[second]))
+        (count == 2 && io.tetrahedronattributelist[first] != io.tetrahedronattributelist[second]))
       {
         kept.push_back(face);
       }
