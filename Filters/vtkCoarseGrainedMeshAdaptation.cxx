@@ -24,10 +24,9 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-
+#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <vector>
 
