@@ -113,7 +113,7 @@ inline const std::vector<ParameterSpec>& parameterTable()
       &O::improvementPasses },
     { "NumberOfThreads", "--threads", "T", K::Integer, 0, INT_MAX, 0, "", S::Any,
       "OpenMP threads, 0 = all cores; the output does not depend on it", &O::numberOfThreads },
-    { "MaximumNumberOfCells", "--max-cells", "N", K::Count, 0, 9007199254740992.0, 100000000, "",
+    { "MaximumNumberOfCells", "--max-cells", "N", K::Count, 0, LargestExactCount, 100000000, "",
       S::Any,
       "size guard: refuse, before allocating them, a refinement forecast to make more tets; "
       "0 = no limit",

@@ -71,7 +71,8 @@ PartitionGraph graphOfPartitions(const std::vector<PartitionMesh>& partitions, P
   return buildPartitionGraph(tets, partitionOfCell, static_cast<int>(partitions.size()), points);
 }
 
-// One improvement sweep over box partitions of the given layout; `sweep` 0 or 1 of two.
+// One improvement sweep over box partitions; `sweepIndex` 0 lays the boxes from the bounding
+// box's corner, 1 shifts them by half a box.
 Status improveOverBoxes(const ColorLoopSetup& refinementSetup, const AdaptationOptions& options,
   int cells, int sweepIndex, AdaptationState& state, AdaptationSummary& summary,
   PhaseReporter& reporter)

@@ -48,6 +48,8 @@ using ParameterField = std::variant<int AdaptationOptions::*, std::int64_t Adapt
   std::string AdaptationOptions::*>;
 
 constexpr double Unbounded = std::numeric_limits<double>::infinity();
+// The largest Count the numeric interface (doubles) carries exactly: 2^53.
+constexpr double LargestExactCount = 9007199254740992.0;
 
 struct ParameterSpec
 {

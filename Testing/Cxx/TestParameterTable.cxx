@@ -43,7 +43,7 @@ double naturalMaximum(ParameterKind kind)
     case ParameterKind::Integer:
       return 2147483647.0;
     case ParameterKind::Count:
-      return 9007199254740992.0;
+      return cgmesh::LargestExactCount;
     default:
       return cgmesh::Unbounded;
   }
