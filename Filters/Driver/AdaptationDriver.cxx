@@ -67,7 +67,6 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   int partitions = plan.partitions;
   PartitioningOptions partitioning;
   partitioning.contiguous = options.method == RefinementMethod::Delaunay;
-  partitioning.parallelFor = parallelForOn(plan.threads);
   Status status = options.partitionByRegion
     ? partitionByRegion(input, options.partitionsPerRegion, partitionOfCell, partitions)
     : partitionMesh(input, plan.partitions, partitionOfCell, partitioning);

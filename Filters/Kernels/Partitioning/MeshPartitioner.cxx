@@ -207,7 +207,7 @@ std::vector<int> proportionalShares(const std::vector<std::int64_t>& sizes, int 
 }
 
 // Two levels: METIS cuts the graph into about sqrt(parts) parts, then each of those into its
-// share of `parts`; the second level's calls are independent and run through parallelFor.
+// share of `parts`, one METIS call after another (see PartitioningOptions).
 Status partitionHierarchically(const DualGraph& graph, int parts,
   const PartitioningOptions& options, std::vector<int>& partOfVertex)
 {
@@ -233,29 +233,23 @@ Status partitionHierarchically(const DualGraph& graph, int parts,
   }
   const std::vector<int> shares = proportionalShares(sizes, parts);
   std::vector<std::vector<int>> local(coarseCount);
-  std::vector<Status> outcomes(coarseCount, Status::success());
-  status = options.parallelFor(coarseCount,
-    [&](std::int64_t c)
-    {
-      DualGraph sub;
-      sub.offsets.push_back(0);
-      for (CellId v : members[c])
-      {
-        for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
-        {
-          const CellId w = graph.neighbours[k];
-          if (coarsePart[w] == c)
-          {
-            sub.neighbours.push_back(indexInPart[w]);
-          }
-        }
-        sub.offsets.push_back(static_cast<std::int64_t>(sub.neighbours.size()));
-      }
-      outcomes[c] = partitionGraphKway(sub, shares[c], local[c], options.contiguous);
-    });
-  for (const Status& outcome : outcomes)
+  for (int c = 0; c < coarseCount && status.ok(); ++c)
   {
-    status = status.ok() ? outcome : status;
+    DualGraph sub;
+    sub.offsets.push_back(0);
+    for (CellId v : members[c])
+    {
+      for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
+      {
+        const CellId w = graph.neighbours[k];
+        if (coarsePart[w] == c)
+        {
+          sub.neighbours.push_back(indexInPart[w]);
+        }
+      }
+      sub.offsets.push_back(static_cast<std::int64_t>(sub.neighbours.size()));
+    }
+    status = partitionGraphKway(sub, shares[c], local[c], options.contiguous);
   }
   if (!status.ok())
   {

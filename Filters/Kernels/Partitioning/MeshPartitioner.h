@@ -4,7 +4,6 @@
 #define cgmesh_MeshPartitioner_h
 
 #include "Core/Status.h"
-#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 
 #include <vector>
@@ -28,10 +27,10 @@ struct PartitioningOptions
   // tets near interfaces without it); TetGen partitions are kept in one piece.
   bool contiguous = true;
   // From this many partitions on, METIS' initial partitioning of its coarsest graph dominates:
-  // the mesh is first cut into about sqrt(k) parts, then each into its share of the k.
+  // the mesh is first cut into about sqrt(k) parts, then each into its share of the k. The
+  // second level runs one METIS call after another: METIS seeds a process-wide random generator,
+  // so overlapping calls would make the partitions depend on thread timing.
   int hierarchicalFrom = 4096;
-  // Runs the second level's METIS calls, which are independent (the result never depends on it).
-  ParallelFor parallelFor = runSerially;
 };
 
 // Assigns every tet a partition in [0, numberOfPartitions). Deterministic: METIS runs with a
