@@ -202,7 +202,7 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
     return status;
   }
   return improveAcrossFormerInterfaces(
-    setup, options, summary.plan.boxesPerAxis, state, summary, reporter);
+    setup, options, summary.plan.boxesPerAxis, formerInterface, state, summary, reporter);
 }
 
 Status runPipeline(const TetMesh& input, const AdaptationOptions& options, AdaptationResult& result,

@@ -101,16 +101,49 @@ Status improveOverBoxes(const ColorLoopSetup& refinementSetup, const AdaptationO
   return runColorLoop(sweep, options, state, summary, reporter);
 }
 
+// Moves the tets that touch no former interface vertex out of the partitions, into one mesh of
+// their own: the sweeps have nothing to do there (refinement already improved them, or TetGen
+// met its bound), and leaving them out halves what the sweeps build.
+PartitionMesh setAsideSettledTets(
+  std::vector<PartitionMesh>& partitions, const std::vector<char>& formerInterface)
+{
+  PartitionMesh settled;
+  for (PartitionMesh& partition : partitions)
+  {
+    PartitionMesh seam;
+    for (std::size_t t = 0; t < partition.tets.size(); ++t)
+    {
+      bool touches = false;
+      for (PointId p : partition.tets[t])
+      {
+        touches =
+          touches || (p < static_cast<PointId>(formerInterface.size()) && formerInterface[p]);
+      }
+      PartitionMesh& target = touches ? seam : settled;
+      target.tets.push_back(partition.tets[t]);
+      target.parentCells.push_back(partition.parentCells[t]);
+      if (!partition.regions.empty())
+      {
+        target.regions.push_back(partition.regions[t]);
+      }
+    }
+    partition = std::move(seam);
+  }
+  return settled;
+}
+
 } // namespace
 
 Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
-  const AdaptationOptions& options, int boxesPerAxis, AdaptationState& state,
-  AdaptationSummary& summary, PhaseReporter& reporter)
+  const AdaptationOptions& options, int boxesPerAxis, const std::vector<char>& formerInterface,
+  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
 {
   if (refinementSetup.improve && summary.poorTets == 0)
   {
     return Status::success(); // improvement in partitions saw no poor tet: no seam to work on
   }
+  reporter.enter(Phase::Improve);
+  PartitionMesh settled = setAsideSettledTets(state.partitions, formerInterface);
   // Box faces freeze vertices in their turn: a second layout shifted by half a box frees them.
   for (int sweepIndex = 0; sweepIndex < 2; ++sweepIndex)
   {
@@ -121,6 +154,7 @@ Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
       return status;
     }
   }
+  state.partitions.push_back(std::move(settled));
   return Status::success();
 }
 

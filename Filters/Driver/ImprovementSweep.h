@@ -13,10 +13,12 @@ namespace cgmesh
 {
 
 // `refinementSetup` is the set-up the refinement ran with (threads, improvement parameters);
-// `boxesPerAxis` the boxes along each axis of the first layout. All its time is improvement.
+// `boxesPerAxis` the boxes along each axis of the first layout; `formerInterface` flags the
+// vertices shared by two refinement partitions: only the tets touching one take part, the others
+// end up in one last partition of their own. All its time is improvement.
 Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
-  const AdaptationOptions& options, int boxesPerAxis, AdaptationState& state,
-  AdaptationSummary& summary, PhaseReporter& reporter);
+  const AdaptationOptions& options, int boxesPerAxis, const std::vector<char>& formerInterface,
+  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter);
 
 } // namespace cgmesh
 
