@@ -6,11 +6,11 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
-#include "vtkIdList.h"
-#include "vtkMeshQuality.h"
+#include "vtkIdTypeArray.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
-#include "vtkTetra.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -19,49 +19,93 @@
 namespace cgmesh
 {
 
+namespace
+{
+
+// Corner ids of cell `cellId`, when every cell is a tet stored in a plain connectivity array.
+template <typename Connectivity>
+void tetCorners(const Connectivity* connectivity, vtkIdType cellId, vtkIdType corners[4])
+{
+  for (int k = 0; k < 4; ++k)
+  {
+    corners[k] = static_cast<vtkIdType>(connectivity->GetValue(4 * cellId + k));
+  }
+}
+
+bool allCellsAreTets(vtkUnstructuredGrid* grid)
+{
+  vtkCellArray* cells = grid->GetCells();
+  return cells->GetNumberOfConnectivityIds() == 4 * grid->GetNumberOfCells() &&
+    cells->IsHomogeneous() == 4;
+}
+
+} // namespace
+
 Status addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
 {
   const vtkIdType numberOfCells = grid->GetNumberOfCells();
-  vtkNew<vtkDoubleArray> edgeRatio;
-  edgeRatio->SetName("EdgeRatio");
-  edgeRatio->SetNumberOfValues(numberOfCells);
-  vtkNew<vtkDoubleArray> minDihedralAngle;
-  minDihedralAngle->SetName("MinDihedralAngle");
-  minDihedralAngle->SetNumberOfValues(numberOfCells);
+  vtkNew<vtkDoubleArray> edgeRatios;
+  edgeRatios->SetName("EdgeRatio");
+  edgeRatios->SetNumberOfValues(numberOfCells);
+  vtkNew<vtkDoubleArray> minDihedralAngles;
+  minDihedralAngles->SetName("MinDihedralAngle");
+  minDihedralAngles->SetNumberOfValues(numberOfCells);
+  if (numberOfCells == 0)
+  {
+    grid->GetCellData()->AddArray(edgeRatios);
+    grid->GetCellData()->AddArray(minDihedralAngles);
+    return Status::success();
+  }
+  if (!allCellsAreTets(grid) || !grid->GetPoints())
+  {
+    return Status::failure(ErrorKind::Internal, "quality arrays asked for a grid of non-tets");
+  }
+
+  // Plain arrays are read directly: through vtkPoints::GetPoint and vtkCellArray::GetCellAtId the
+  // virtual calls cost more than the measures themselves.
+  vtkNew<vtkDoubleArray> converted; // for points not stored as doubles
+  auto* coordinates = vtkDoubleArray::SafeDownCast(grid->GetPoints()->GetData());
+  if (!coordinates)
+  {
+    converted->DeepCopy(grid->GetPoints()->GetData());
+    coordinates = converted;
+  }
+  const double* xyz = coordinates->GetPointer(0);
+  vtkCellArray* cells = grid->GetCells();
+  double* edgeRatio = edgeRatios->GetPointer(0);
+  double* minDihedralAngle = minDihedralAngles->GetPointer(0);
 
   constexpr vtkIdType CellsPerBlock = 16384;
   const vtkIdType blocks = (numberOfCells + CellsPerBlock - 1) / CellsPerBlock;
-  vtkPoints* points = grid->GetPoints();
-  vtkCellArray* cells = grid->GetCells();
   // Each block writes only its own cells' values, so the blocks need no synchronisation.
   const Status status = runParallel(resolveThreadCount(threads), blocks,
     [&](std::int64_t block)
     {
-      vtkNew<vtkTetra> tetra;
-      vtkNew<vtkIdList> corners;
-      double coordinates[3];
       const vtkIdType end = std::min(numberOfCells, (block + 1) * CellsPerBlock);
       for (vtkIdType cellId = block * CellsPerBlock; cellId < end; ++cellId)
       {
-        cells->GetCellAtId(cellId, corners); // the id-list overload is safe to call concurrently
-        for (vtkIdType corner = 0; corner < 4; ++corner)
+        vtkIdType corners[4];
+        if (cells->IsStorage64Bit())
         {
-          points->GetPoint(corners->GetId(corner), coordinates);
-          tetra->GetPoints()->SetPoint(corner, coordinates);
+          tetCorners(cells->GetConnectivityArray64(), cellId, corners);
         }
-        edgeRatio->SetValue(cellId, vtkMeshQuality::TetEdgeRatio(tetra));
-        double p[4][3];
-        for (int corner = 0; corner < 4; ++corner)
+        else
         {
-          tetra->GetPoints()->GetPoint(corner, p[corner]);
+          tetCorners(cells->GetConnectivityArray32(), cellId, corners);
         }
-        minDihedralAngle->SetValue(cellId, minimumDihedralAngle(p[0], p[1], p[2], p[3]));
+        const double* p[4];
+        for (int k = 0; k < 4; ++k)
+        {
+          p[k] = xyz + 3 * corners[k];
+        }
+        edgeRatio[cellId] = cgmesh::edgeRatio(p[0], p[1], p[2], p[3]);
+        minDihedralAngle[cellId] = minimumDihedralAngle(p[0], p[1], p[2], p[3]);
       }
     });
   if (status.ok())
   {
-    grid->GetCellData()->AddArray(edgeRatio);
-    grid->GetCellData()->AddArray(minDihedralAngle);
+    grid->GetCellData()->AddArray(edgeRatios);
+    grid->GetCellData()->AddArray(minDihedralAngles);
   }
   return status;
 }

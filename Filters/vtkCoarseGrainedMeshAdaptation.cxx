@@ -241,10 +241,11 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
 }
 
 // The filter's parameters, with the progress and abort hooks of this run.
-cgmesh::AdaptationOptions makeOptions(
-  vtkCoarseGrainedMeshAdaptation* filter, const cgmesh::AdaptationOptions& parameters)
+cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter,
+  const cgmesh::AdaptationOptions& parameters, vtkUnstructuredGrid* input)
 {
   cgmesh::AdaptationOptions options = parameters;
+  options.pointProvenance = input->GetPointData()->GetNumberOfArrays() > 0;
   // The driver calls both hooks on the calling thread only.
   options.progress = [filter](double fraction, const char*)
   {
@@ -285,8 +286,11 @@ void fillOutput(
 {
   cgmesh::convertToUnstructuredGrid(result.mesh, output);
   copyCellDataToChildren(input->GetCellData(), result.parentCell, output->GetCellData());
-  interpolatePointData(input->GetPointData(), result.provenance, output->GetPointData());
-  interpolateIdTypeArrays(input->GetPointData(), result.provenance, output->GetPointData());
+  if (input->GetPointData()->GetNumberOfArrays() > 0) // else the driver made no provenance
+  {
+    interpolatePointData(input->GetPointData(), result.provenance, output->GetPointData());
+    interpolateIdTypeArrays(input->GetPointData(), result.provenance, output->GetPointData());
+  }
   output->GetCellData()->AddArray(makeCellIntArray("PartitionId", result.partitionOfCell));
   output->GetCellData()->AddArray(makeCellIntArray("ColorId", result.colorOfCell));
   vtkNew<vtkUnsignedCharArray> nearFormerInterface;
@@ -485,7 +489,7 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   }
 
   cgmesh::AdaptationResult result;
-  status = cgmesh::adaptMesh(inputMesh, makeOptions(this, this->Internals->Parameters), result);
+  status = cgmesh::adaptMesh(inputMesh, makeOptions(this, this->Internals->Parameters, input), result);
   this->Internals->LastSummary = result.summary;
   this->Internals->LastQualitySeconds = 0;
   this->Internals->HasRun = true;

@@ -245,7 +245,8 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   result.nearFormerInterface = markNearFormerInterface(state.partitions, formerInterface);
   MergedMesh merged;
   status = mergePartitions(state.partitions, state.coordinates, state.inputPointCount,
-    state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints });
+    state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints },
+    options.pointProvenance);
   if (!status.ok())
   {
     return status;

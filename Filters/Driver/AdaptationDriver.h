@@ -54,7 +54,7 @@ struct AdaptationResult
   std::vector<CellId> parentCell;   // per output tet: the input tet it came from
   std::vector<int> partitionOfCell; // per output tet
   std::vector<int> colorOfCell;     // per output tet
-  PointProvenance provenance;       // per output point, over input point ids
+  PointProvenance provenance;       // per output point, over input point ids (if asked for)
   // Per output tet: 1 when it touches a vertex that lay on an interface between refinement
   // partitions (to compare quality near former interfaces with the interior).
   std::vector<char> nearFormerInterface;

@@ -52,6 +52,11 @@ struct AdaptationOptions
   // Partitions whose TetGen call is made to fail, to exercise the fallback.
   std::vector<int> simulateTetGenFailureIn;
 
+  // Whether the result needs point provenance (the weights that interpolate point data). Without
+  // point data there is nothing to interpolate, and the merge skips locating moved points in the
+  // input and expanding every new point's recipe.
+  bool pointProvenance = true;
+
   // Called on the calling thread only: fraction in [0, 1], never decreasing, and the phase name.
   std::function<void(double fraction, const char* phase)> progress;
   // Polled on the calling thread between colours and phases; returning true aborts the run.

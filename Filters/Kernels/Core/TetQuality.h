@@ -58,7 +58,9 @@ inline double minimumDihedralAngle(
       n[2] = -n[2];
     }
   }
-  double smallest = 180;
+  // The smallest angle has the largest cosine: one acos instead of six.
+  double largestCosine = -1;
+  bool any = false;
   for (int i = 0; i < 4; ++i)
   {
     for (int j = i + 1; j < 4; ++j)
@@ -70,12 +72,22 @@ inline double minimumDihedralAngle(
         (normal[j][0] * normal[j][0] + normal[j][1] * normal[j][1] + normal[j][2] * normal[j][2]));
       if (lengths > 0)
       {
-        const double cosine = std::max(-1.0, std::min(1.0, -dot / lengths));
-        smallest = std::min(smallest, std::acos(cosine) * 180.0 / M_PI);
+        largestCosine = std::max(largestCosine, std::min(1.0, -dot / lengths));
+        any = true;
       }
     }
   }
-  return smallest;
+  return any ? std::acos(largestCosine) * 180.0 / M_PI : 180.0;
+}
+
+// Longest edge over shortest edge (1 for the regular tet); infinite when an edge has no length.
+inline double edgeRatio(const double* p0, const double* p1, const double* p2, const double* p3)
+{
+  const double squared[6] = { squaredDistance(p0, p1), squaredDistance(p0, p2),
+    squaredDistance(p0, p3), squaredDistance(p1, p2), squaredDistance(p1, p3),
+    squaredDistance(p2, p3) };
+  const auto range = std::minmax_element(squared, squared + 6);
+  return *range.first > 0 ? std::sqrt(*range.second / *range.first) : HUGE_VAL;
 }
 
 } // namespace cgmesh

@@ -134,7 +134,7 @@ PointProvenance expandProvenance(PointId inputPointCount,
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
   const std::vector<PointSource>& newPointSources, MergedMesh& merged,
-  const RelocationInput& relocation)
+  const RelocationInput& relocation, bool withProvenance)
 {
   try
   {
@@ -161,11 +161,15 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
     merged = MergedMesh();
     merged.removedPoints = globalCount - outputCount;
 
-    const PointProvenance all =
-      expandProvenance(inputPointCount, newPointSources, coordinates, relocation);
+    const PointProvenance all = withProvenance
+      ? expandProvenance(inputPointCount, newPointSources, coordinates, relocation)
+      : PointProvenance();
     merged.mesh.coordinates.reserve(3 * outputCount);
-    merged.provenance.offsets.reserve(outputCount + 1);
-    merged.provenance.offsets.push_back(0);
+    if (withProvenance)
+    {
+      merged.provenance.offsets.reserve(outputCount + 1);
+      merged.provenance.offsets.push_back(0);
+    }
     for (PointId p = 0; p < globalCount; ++p)
     {
       if (outputIdOf[p] < 0)
@@ -174,6 +178,10 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
       }
       merged.mesh.coordinates.insert(merged.mesh.coordinates.end(), coordinates.begin() + 3 * p,
         coordinates.begin() + 3 * p + 3);
+      if (!withProvenance)
+      {
+        continue;
+      }
       merged.provenance.sources.insert(merged.provenance.sources.end(),
         all.sources.begin() + all.offsets[p], all.sources.begin() + all.offsets[p + 1]);
       merged.provenance.weights.insert(merged.provenance.weights.end(),

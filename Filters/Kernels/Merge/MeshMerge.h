@@ -43,10 +43,12 @@ struct RelocationInput
   const std::vector<PointId>* movedPoints = nullptr;
 };
 
+// `withProvenance` false leaves merged.provenance empty (nothing to interpolate).
+
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
   const std::vector<PointSource>& newPointSources, MergedMesh& merged,
-  const RelocationInput& relocation = RelocationInput());
+  const RelocationInput& relocation = RelocationInput(), bool withProvenance = true);
 
 } // namespace cgmesh
 
