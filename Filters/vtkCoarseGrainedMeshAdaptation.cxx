@@ -198,6 +198,8 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "VolumeBound", result.plan.volumeBound);
   addFieldValue(fieldData, "DelaunayFallbacks", static_cast<double>(result.delaunayFallbacks));
   addFieldValue(fieldData, "TetGenPoints", static_cast<double>(result.tetgenPoints));
+  addFieldValue(fieldData, "IterationsRun", result.iterationsRun);
+  addFieldValue(fieldData, "RefinementConverged", result.refinementConverged ? 1 : 0);
   addFieldValue(fieldData, "TetGenRetries", static_cast<double>(result.tetgenRetries));
   vtkNew<vtkIntArray> fallbackPartitions; // one tuple per fallback, in refinement order
   fallbackPartitions->SetName("FallbackPartitions");

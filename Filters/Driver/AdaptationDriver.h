@@ -31,6 +31,10 @@ struct AdaptationSummary
   std::int64_t delaunayFallbacks = 0;           // partition refinements that fell back to templates
   std::vector<int> fallbackPartitions;          // their partitions (with repeats across iterations)
   std::int64_t tetgenPoints = 0;                // Steiner points TetGen inserted
+  // Refinement passes made; fewer than NumberOfIterations when a pass added no point (the mesh
+  // already met the threshold or bound), which sets `refinementConverged`.
+  int iterationsRun = 0;
+  bool refinementConverged = false;
   std::int64_t tetgenRetries = 0;  // partition refinements whose first TetGen call failed
   bool concurrentTetGen = false;   // TetGen calls overlapped (in worker processes)
   std::int64_t reorientedTets = 0; // inverted input tets that were turned around

@@ -296,6 +296,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
 {
   const auto members = partitionsByColor(*setup.colorOfPartition, setup.numberOfColors);
   const int steps = setup.numberOfIterations * setup.numberOfColors;
+  std::size_t pointsAtLastPass = 0;
   if (setup.refine)
   {
     summary.partitionTaskSeconds.assign(
@@ -303,6 +304,12 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
   }
   for (int iteration = 0; iteration < setup.numberOfIterations; ++iteration)
   {
+    if (setup.refine && iteration > 0 && state.coordinates.size() == pointsAtLastPass)
+    {
+      summary.refinementConverged = true; // a pass that adds no point changes nothing after it
+      break;
+    }
+    pointsAtLastPass = state.coordinates.size();
     // Recomputed per iteration: the last one's splits made new interface points.
     reporter.enter(setup.refine ? Phase::Heal : Phase::Improve);
     const std::vector<char> interfaceVertex =
@@ -336,6 +343,14 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
       reporter.progress(
         setup.stage, setup.progressStart + (setup.progressEnd - setup.progressStart) * done);
     }
+    if (setup.refine)
+    {
+      summary.iterationsRun = iteration + 1;
+    }
+  }
+  if (setup.refine && state.coordinates.size() == pointsAtLastPass)
+  {
+    summary.refinementConverged = true; // the last pass allowed added no point either
   }
   return Status::success();
 }

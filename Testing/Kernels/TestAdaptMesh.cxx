@@ -218,6 +218,55 @@ void test_abort_between_colours()
   CHECK(result.mesh.tets.empty());
 }
 
+// Passes stop after one that adds no point, and say so; the result is that of that many passes.
+void test_iterations_stop_when_a_pass_adds_nothing()
+{
+  const TetMesh input = cubeWithRegions(3);
+  AdaptationOptions options;
+  options.numberOfPartitions = 8;
+  options.numberOfThreads = 2;
+  options.edgeLengthFactor = 0.25;
+  options.improveQuality = false;
+  options.numberOfIterations = 10;
+  AdaptationResult many;
+  CHECK(adaptMesh(input, options, many).ok());
+  const int run = many.summary.iterationsRun;
+  CHECK(run >= 2 && run < 10);
+  CHECK(many.summary.refinementConverged);
+
+  options.numberOfIterations = run;
+  AdaptationResult exact;
+  CHECK(adaptMesh(input, options, exact).ok());
+  CHECK(cgmesh_test::identicalResults(many, exact));
+
+  // The last pass run added nothing: one pass fewer gives the same mesh, but cannot know it is
+  // done, since its own last pass added points.
+  options.numberOfIterations = run - 1;
+  AdaptationResult fewer;
+  CHECK(adaptMesh(input, options, fewer).ok());
+  CHECK_EQUAL(fewer.summary.iterationsRun, run - 1);
+  CHECK(!fewer.summary.refinementConverged);
+  CHECK(cgmesh_test::identicalResults(many, fewer));
+}
+
+// Without point data to interpolate, the front end asks for no provenance: same mesh, none made.
+void test_point_provenance_only_when_asked()
+{
+  const TetMesh input = cubeWithRegions(4);
+  AdaptationOptions options;
+  options.numberOfPartitions = 16;
+  options.numberOfThreads = 2;
+  AdaptationResult with, without;
+  CHECK(adaptMesh(input, options, with).ok());
+  options.pointProvenance = false;
+  CHECK(adaptMesh(input, options, without).ok());
+  CHECK(without.provenance.offsets.empty() && without.provenance.sources.empty());
+  CHECK(with.provenance.offsets.size() == static_cast<std::size_t>(with.mesh.numberOfPoints()) + 1);
+  CHECK(with.mesh.coordinates == without.mesh.coordinates);
+  CHECK(with.mesh.tets == without.mesh.tets);
+  CHECK(with.parentCell == without.parentCell);
+}
+
 } // namespace
 
 int main()
@@ -229,5 +278,7 @@ int main()
   test_automatic_partition_count();
   test_bad_options_are_refused();
   test_abort_between_colours();
+  test_iterations_stop_when_a_pass_adds_nothing();
+  test_point_provenance_only_when_asked();
   return cgmesh_test::finish("TestAdaptMesh");
 }
