@@ -61,6 +61,8 @@ Status parseCheckArguments(const std::vector<std::string>& arguments, CheckArgum
 Status parseInt(
   const std::string& text, const std::string& what, int minimum, int maximum, int& value);
 Status parseDouble(const std::string& text, const std::string& what, double minimum, double& value);
+// As parseDouble, but the number must be greater than 0.
+Status parsePositiveDouble(const std::string& text, const std::string& what, double& value);
 // Strict parsing of a 64-bit count: the whole text must be an integer >= minimum.
 Status parseCount(
   const std::string& text, const std::string& what, long long minimum, long long& value);

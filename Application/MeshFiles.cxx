@@ -2,6 +2,8 @@
 
 #include "VTKMessages.h"
 
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridReader.h"
@@ -12,6 +14,8 @@
 #include <filesystem>
 #include <system_error>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 namespace cgmesh
 {
@@ -39,6 +43,52 @@ FileFormat formatOf(const std::string& fileName)
 Status unknownFormat(const std::string& fileName)
 {
   return Status::failure("'" + fileName + "': unknown file type (use .vtu or .vtk)");
+}
+
+// "'a', 'b' and 'c'", or "none".
+std::string listOfNames(const std::vector<std::string>& names)
+{
+  if (names.empty())
+    return "none";
+  std::string list = "'" + names.front() + "'";
+  for (std::size_t index = 1; index < names.size(); ++index)
+    list += (index + 1 == names.size() ? " and '" : ", '") + names[index] + "'";
+  return list;
+}
+
+// True when the two names reach the same file: the same inode when both exist (other spellings,
+// symbolic and hard links), else the same canonical path.
+bool isSameFile(const std::string& first, const std::string& second)
+{
+  std::error_code error;
+  if (std::filesystem::exists(first, error) && std::filesystem::exists(second, error))
+    return std::filesystem::equivalent(first, second, error) && !error;
+  const auto canonical = [](const std::string& name)
+  {
+    std::error_code ignored;
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(name, ignored), ignored);
+  };
+  return canonical(first) == canonical(second);
+}
+
+// The files of a command as (role, name), the one read first: fails with an InvalidOption status
+// when a file written later is the same as an earlier one. Empty names are skipped.
+Status checkDistinctFiles(const std::vector<std::pair<std::string, std::string>>& files)
+{
+  for (std::size_t later = 1; later < files.size(); ++later)
+  {
+    for (std::size_t earlier = 0; earlier < later; ++earlier)
+    {
+      const auto& [laterRole, laterName] = files[later];
+      const auto& [earlierRole, earlierName] = files[earlier];
+      if (laterName.empty() || earlierName.empty() || !isSameFile(earlierName, laterName))
+        continue;
+      return Status::failure(ErrorKind::InvalidOption,
+        laterRole + " '" + laterName + "' is the same file as " + earlierRole + " '" + earlierName +
+          "': writing " + laterRole + " would overwrite " + earlierRole + "; choose another name");
+    }
+  }
+  return Status::success();
 }
 
 } // namespace
@@ -86,11 +136,56 @@ Status checkOutputFileName(const std::string& fileName)
 {
   if (formatOf(fileName) == FileFormat::Unknown)
     return unknownFormat(fileName);
-  std::filesystem::path directory = std::filesystem::path(fileName).parent_path();
+  return checkWritableFileName(fileName, "output file");
+}
+
+Status checkWritableFileName(const std::string& fileName, const std::string& what)
+{
+  const std::string cannot = "cannot write " + what + " '" + fileName + "': ";
+  const std::filesystem::path path(fileName);
+  const std::filesystem::path directory = path.parent_path().empty() ? "." : path.parent_path();
   std::error_code error;
-  if (!directory.empty() && !std::filesystem::is_directory(directory, error))
-    return Status::failure(
-      "'" + fileName + "': directory '" + directory.string() + "' does not exist");
+  if (!std::filesystem::is_directory(directory, error))
+    return Status::failure(cannot + "directory '" + directory.string() + "' does not exist");
+  if (::access(directory.c_str(), W_OK | X_OK) != 0)
+    return Status::failure(cannot + "directory '" + directory.string() + "' is not writable");
+  if (std::filesystem::is_directory(path, error))
+    return Status::failure(cannot + "it is a directory");
+  return Status::success();
+}
+
+Status checkCommandFiles(
+  const std::string& input, const std::string& output, const std::string& stats)
+{
+  Status status = checkDistinctFiles({ { "IN", input }, { "OUT", output }, { "--stats", stats } });
+  if (status.ok())
+    status = checkOutputFileName(output);
+  if (status.ok() && !stats.empty())
+    status = checkWritableFileName(stats, "statistics file");
+  return status;
+}
+
+Status checkRegionArray(
+  vtkUnstructuredGrid* grid, const std::string& name, const std::string& fileName)
+{
+  vtkCellData* cellData = grid->GetCellData();
+  std::vector<std::string> all, numeric;
+  for (int index = 0; index < cellData->GetNumberOfArrays(); ++index)
+  {
+    vtkAbstractArray* array = cellData->GetAbstractArray(index);
+    const std::string arrayName = array->GetName() ? array->GetName() : "";
+    all.push_back(arrayName);
+    if (vtkDataArray::SafeDownCast(array))
+      numeric.push_back(arrayName);
+  }
+  vtkAbstractArray* array = cellData->GetAbstractArray(name.c_str());
+  if (!array)
+    return Status::failure("'" + fileName + "' has no cell array '" + name +
+      "' (--region-array); its cell arrays: " + listOfNames(all));
+  if (!vtkDataArray::SafeDownCast(array))
+    return Status::failure("cell array '" + name + "' of '" + fileName +
+      "' is not numeric (--region-array needs region ids); its numeric cell arrays: " +
+      listOfNames(numeric));
   return Status::success();
 }
 

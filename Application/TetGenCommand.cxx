@@ -198,13 +198,15 @@ int runTetGenCommand(const std::vector<std::string>& commandArguments)
   {
     return early;
   }
-  Status status = checkOutputFileName(arguments.outputFile);
+  Status status = checkCommandFiles(arguments.inputFile, arguments.outputFile, arguments.statsFile);
   if (!status.ok())
-    return reportError(status.message());
+    return reportFailure(status);
 
   const Stopwatch stopwatch;
   vtkNew<vtkUnstructuredGrid> input;
   status = readUnstructuredGrid(arguments.inputFile, input);
+  if (status.ok() && !arguments.regionArrayName.empty())
+    status = checkRegionArray(input, arguments.regionArrayName, arguments.inputFile);
   if (!status.ok())
     return reportError(status.message());
   const vtkIdType nonTetrahedra = countNonTetrahedra(input);
