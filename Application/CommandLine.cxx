@@ -112,11 +112,11 @@ struct OptionNames
   bool knows(const std::string& name) const { return withValue.count(name) || flags.count(name); }
 };
 
-// Every option of `cgmesh refine`: the parameter table's (Boolean parameters are flags) and
-// --stats.
+// Every option of `cgmesh refine`: the parameter table's (Boolean parameters are flags), --stats
+// and --compression.
 OptionNames refineOptionNames()
 {
-  OptionNames names{ { "--stats" }, {} };
+  OptionNames names{ { "--stats", "--compression" }, {} };
   for (const ParameterSpec& spec : parameterTable())
   {
     (spec.kind == ParameterKind::Boolean ? names.flags : names.withValue).insert(spec.flag);
@@ -364,6 +364,25 @@ Status applyParameter(
   return status;
 }
 
+// OUT's compression when --compression is not given: legacy .vtk files are never compressed.
+Compression defaultCompressionFor(const std::string& outputFile)
+{
+  return isLegacyFileName(outputFile) ? Compression::None : DefaultCompression;
+}
+
+// --compression NAME: a .vtu writer setting; legacy .vtk files are always uncompressed.
+Status parseCompression(
+  const std::string& text, const std::string& outputFile, Compression& compression)
+{
+  if (!compressionFromName(text, compression))
+    return Status::failure(
+      "unknown compression '" + text + "' for --compression (use none, lz4, zlib)");
+  if (isLegacyFileName(outputFile) && compression != Compression::None)
+    return Status::failure("--compression " + text +
+      " needs a .vtu output: legacy .vtk files are written as uncompressed binary");
+  return Status::success();
+}
+
 Status applyRefineOption(const std::string& name, const std::string& value, RefineArguments& parsed)
 {
   if (name == "--stats")
@@ -371,6 +390,8 @@ Status applyRefineOption(const std::string& name, const std::string& value, Refi
     parsed.statsFile = value;
     return Status::success();
   }
+  if (name == "--compression")
+    return parseCompression(value, parsed.outputFile, parsed.compression);
   const ParameterSpec* spec = findParameterByFlag(name);
   if (!spec)
     return Status::failure("unknown option '" + name + "' (see --help)");
@@ -391,6 +412,7 @@ Status parseRefineArguments(const std::vector<std::string>& arguments, RefineArg
     return status;
   parsed.inputFile = positionals[0];
   parsed.outputFile = positionals[1];
+  parsed.compression = defaultCompressionFor(parsed.outputFile);
   status = checkRefineOptionCombinations(options);
   if (!status.ok())
     return status;
@@ -475,6 +497,18 @@ std::string refineOptionsHelp()
   return help;
 }
 
+std::string compressionHelp()
+{
+  return "  --compression NAME      compression of the arrays of a .vtu OUT, written as appended "
+         "raw\n"
+         "                          binary data (.vtk files are always uncompressed binary):\n"
+         "                          none, lz4 (default) or zlib (level 1). Writing 1.9 M tets\n"
+         "                          on a 2-core VM:\n"
+         "                            none    0.27 s   7.2 M tets/s   134 MB\n"
+         "                            lz4     0.31 s   6.1 M tets/s    66 MB\n"
+         "                            zlib    1.63 s   1.2 M tets/s    47 MB\n";
+}
+
 namespace
 {
 
@@ -482,6 +516,8 @@ namespace
 Status parseGenerateOption(
   const std::string& name, const std::string& value, GenerateArguments& parsed)
 {
+  if (name == "--compression")
+    return parseCompression(value, parsed.outputFile, parsed.compression);
   if (parsed.shape == "cube")
     return Status::failure("option " + name + " is for finfet and finfet-grid, not cube");
   return parseInt(value, "--cells", 1000, 500000000, parsed.targetCells);
@@ -493,6 +529,8 @@ Status parseTetGenOption(const std::string& name, const std::string& value, TetG
     return parsePositiveDouble(value, name, parsed.maximumVolume);
   if (name == "--radius-edge-ratio")
     return parseDouble(value, name, 1.0, parsed.radiusEdgeRatio);
+  if (name == "--compression")
+    return parseCompression(value, parsed.outputFile, parsed.compression);
   (name == "--region-array" ? parsed.regionArrayName : parsed.statsFile) = value;
   return Status::success();
 }
@@ -503,7 +541,8 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
 {
   std::vector<std::string> positionals;
   std::map<std::string, std::string> options;
-  Status status = splitArguments(arguments, { { "--cells" }, {} }, positionals, options);
+  Status status =
+    splitArguments(arguments, { { "--cells", "--compression" }, {} }, positionals, options);
   if (!status.ok())
     return status;
   if (positionals.empty())
@@ -524,6 +563,7 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
   if (!status.ok())
     return status;
   parsed.outputFile = positionals.back();
+  parsed.compression = defaultCompressionFor(parsed.outputFile);
   for (auto option = options.begin(); status.ok() && option != options.end(); ++option)
     status = parseGenerateOption(option->first, option->second, parsed);
   return status;
@@ -533,8 +573,9 @@ Status parseTetGenArguments(const std::vector<std::string>& arguments, TetGenArg
 {
   std::vector<std::string> positionals;
   std::map<std::string, std::string> options;
-  const OptionNames known{ { "--max-volume", "--radius-edge-ratio", "--region-array", "--stats" },
-    {} };
+  const OptionNames known{
+    { "--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "--compression" }, {}
+  };
   Status status = splitArguments(arguments, known, positionals, options);
   if (!status.ok())
     return status;
@@ -543,6 +584,7 @@ Status parseTetGenArguments(const std::vector<std::string>& arguments, TetGenArg
     return status;
   parsed.inputFile = positionals[0];
   parsed.outputFile = positionals[1];
+  parsed.compression = defaultCompressionFor(parsed.outputFile);
   if (!options.count("--max-volume"))
     return Status::failure("--max-volume V is required");
   for (auto option = options.begin(); status.ok() && option != options.end(); ++option)

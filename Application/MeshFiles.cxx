@@ -1,6 +1,7 @@
 #include "MeshFiles.h"
 
 #include "VTKMessages.h"
+#include "WriterCaches.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -44,6 +45,9 @@ Status unknownFormat(const std::string& fileName)
 {
   return Status::failure("'" + fileName + "': unknown file type (use .vtu or .vtk)");
 }
+
+constexpr std::pair<Compression, const char*> CompressionNames[] = { { Compression::None, "none" },
+  { Compression::LZ4, "lz4" }, { Compression::ZLib, "zlib" } };
 
 // "'a', 'b' and 'c'", or "none".
 std::string listOfNames(const std::vector<std::string>& names)
@@ -91,7 +95,59 @@ Status checkDistinctFiles(const std::vector<std::pair<std::string, std::string>>
   return Status::success();
 }
 
+// Appended raw binary data: base64 would add a third to the bytes, and the time to encode them.
+void configureXMLWriter(vtkXMLUnstructuredGridWriter* writer, Compression compression)
+{
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  // Uncompressed arrays carry their byte count in the header: 32 bits would stop at 4 GiB.
+  writer->SetHeaderTypeToUInt64();
+  switch (compression)
+  {
+    case Compression::None:
+      writer->SetCompressorTypeToNone();
+      break;
+    case Compression::LZ4:
+      writer->SetCompressorTypeToLZ4();
+      break;
+    case Compression::ZLib:
+      writer->SetCompressorTypeToZLib();
+      // The fastest level: about three times faster than the default for files only slightly
+      // larger.
+      writer->SetCompressionLevel(1);
+      break;
+  }
+}
+
 } // namespace
+
+const char* compressionName(Compression compression)
+{
+  for (const auto& entry : CompressionNames)
+  {
+    if (entry.first == compression)
+      return entry.second;
+  }
+  return "";
+}
+
+bool compressionFromName(const std::string& name, Compression& compression)
+{
+  for (const auto& entry : CompressionNames)
+  {
+    if (name == entry.second)
+    {
+      compression = entry.first;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool isLegacyFileName(const std::string& fileName)
+{
+  return formatOf(fileName) == FileFormat::Legacy;
+}
 
 Status readUnstructuredGrid(const std::string& fileName, vtkUnstructuredGrid* grid)
 {
@@ -189,7 +245,8 @@ Status checkRegionArray(
   return Status::success();
 }
 
-Status writeUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& fileName)
+Status writeUnstructuredGrid(
+  vtkUnstructuredGrid* grid, const std::string& fileName, Compression compression)
 {
   const FileFormat format = formatOf(fileName);
   if (format == FileFormat::Unknown)
@@ -203,11 +260,8 @@ Status writeUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& fileN
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
     messages->watch(writer);
     writer->SetFileName(temporaryName.c_str());
-    writer->SetInputData(grid);
-    // zlib at its fastest level: about three times faster than the default level for files
-    // only slightly larger.
-    writer->SetCompressorTypeToZLib();
-    writer->SetCompressionLevel(1);
+    writer->SetInputData(gridWithWriterCaches(grid));
+    configureXMLWriter(writer, compression);
     written = writer->Write();
   }
   else

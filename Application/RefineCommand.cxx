@@ -40,6 +40,7 @@ void printRefineUsage()
     << "  --stats FILE.json       write counts, colour populations, Delaunay figures,\n"
        "                          improvement counts, the quality summary and phase timings\n"
        "                          as JSON\n"
+    << compressionHelp()
     << "\n"
        "Before the input is read, OUT and FILE.json must be creatable and differ from IN and\n"
        "from each other. With the template method and several iterations, a run whose last\n"
@@ -165,6 +166,7 @@ RefineStatistics collectStatistics(const RefineArguments& arguments,
   statistics.partitionsPerRegion = arguments.options.partitionsPerRegion;
   statistics.improveQuality = arguments.options.improveQuality;
   statistics.improvementPasses = arguments.options.improvementPasses;
+  statistics.compression = compressionName(arguments.compression);
   collectFilterStatistics(filter, output, statistics);
   return statistics;
 }
@@ -206,7 +208,7 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
   removeRunDependentFieldData(output);
 
   stopwatch.lap();
-  status = writeUnstructuredGrid(output, arguments.outputFile);
+  status = writeUnstructuredGrid(output, arguments.outputFile, arguments.compression);
   if (!status.ok())
     return reportError(status.message());
   const double writeSeconds = stopwatch.lap();

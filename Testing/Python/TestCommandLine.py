@@ -1,7 +1,7 @@
 """Drives the cgmesh executable: generate, refine (XML and legacy files, --stats, every colouring,
 partitioning by region, the Delaunay method, quality improvement options and the quality summary),
 the serial tetgen baseline, check, --help, the error paths (one line on stderr, non-zero exit,
-no output file) and the checks made before refining."""
+no output file), the checks made before refining, and --compression."""
 import argparse
 import hashlib
 import json
@@ -65,11 +65,14 @@ def test_help(cgmesh):
     for text in ("--coloring", "--partition-by-region", "--partitions-per-region", *COLORINGS,
                  "--method", "delaunay", "--max-volume", "--volume-factor", "--radius-edge-ratio",
                  "--no-improve", "--improve-passes", "mean ratio", "NearFormerInterface",
-                 "--max-cells"):
+                 "--max-cells", "--compression", "lz4 (default)", "M tets/s"):
         check(text in refine_help, "refine --help does not mention " + text)
     tetgen_help = run(cgmesh, "tetgen", "--help").stdout
-    for text in ("--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "rQq"):
+    for text in ("--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "rQq",
+                 "--compression"):
         check(text in tetgen_help, "tetgen --help does not mention " + text)
+    check("--compression" in run(cgmesh, "generate", "--help").stdout,
+          "generate --help does not mention --compression")
 
 
 def check_color_populations(statistics, description):
@@ -530,7 +533,9 @@ def test_option_values(cgmesh, scratch):
             (["--no-improv", "--threads", "2"], "unknown option '--no-improv'"),
             (["-p", "4"], "unknown option '-p'"),
             (["--colour", "greedy"], "unknown option '--colour' (did you mean '--coloring'?)"),
-            (["--stats", "--threads", "2"], "option --stats needs a value")):
+            (["--stats", "--threads", "2"], "option --stats needs a value"),
+            (["--compression", "gzip"], "unknown compression 'gzip' for --compression (use none, "
+                                        "lz4, zlib)")):
         expect_early_error(cgmesh, scratch, " ".join(arguments), ["refine", cube, out, *arguments],
                            out, 2, text)
     # Recognised before the positionals are counted, wherever they stand.
@@ -640,6 +645,104 @@ def test_size_forecast(cgmesh, scratch):
           + result.stderr)
 
 
+# Reads a .vtu with ParaView's reader; prints a digest of its points, cells and arrays, and
+# whether VTK's own writer, with the same settings, writes the same file (up to arrays written as
+# empty elements rather than self-closing ones, the trace of cached ranges).
+READ_BACK = """import hashlib, re, sys
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+name, compressor, copy = sys.argv[1:4]
+reader = vtkXMLUnstructuredGridReader()
+reader.SetFileName(name)
+reader.Update()
+grid = reader.GetOutput()
+content = hashlib.sha256()
+content.update(vtk_to_numpy(grid.GetPoints().GetData()).tobytes())
+content.update(vtk_to_numpy(grid.GetCells().GetConnectivityArray()).tobytes())
+content.update(vtk_to_numpy(grid.GetCellTypesArray()).tobytes())
+for data in (grid.GetPointData(), grid.GetCellData()):
+    for index in range(data.GetNumberOfArrays()):
+        content.update(data.GetArrayName(index).encode())
+        content.update(vtk_to_numpy(data.GetArray(index)).tobytes())
+writer = vtkXMLUnstructuredGridWriter()
+writer.SetInputData(grid)
+writer.SetFileName(copy)
+writer.SetDataModeToAppended()
+writer.EncodeAppendedDataOff()
+writer.SetHeaderTypeToUInt64()
+getattr(writer, "SetCompressorTypeTo" + compressor)()
+if compressor == "ZLib":
+    writer.SetCompressionLevel(1)
+writer.Write()
+with open(name, "rb") as first, open(copy, "rb") as second:
+    ours = re.sub(rb">\\n *</DataArray>", b"/>", first.read())
+    same = ours == second.read()
+print(grid.GetNumberOfCells(), content.hexdigest(), same)
+"""
+
+COMPRESSORS = {"none": ("None", None), "lz4": ("LZ4", b"vtkLZ4DataCompressor"),
+               "zlib": ("ZLib", b"vtkZLibDataCompressor")}
+
+
+def test_compression(cgmesh, scratch):
+    """Every --compression reads back in ParaView's reader with the same mesh and arrays, as
+    appended raw data; the file is what VTK's writer makes of the same grid, and the same for 1
+    and 2 threads."""
+    cube = os.path.join(scratch, "cube.vtu")
+    contents = {}
+    for name, (compressor, header) in COMPRESSORS.items():
+        outputs = []
+        for threads in ("1", "2"):
+            refined = os.path.join(scratch, "compressed-%s-%s.vtu" % (name, threads))
+            result = run(cgmesh, "refine", cube, refined, "--partitions", "4", "--iterations", "2",
+                         "--edge-length-factor", "0.25", "--threads", threads,
+                         "--compression", name)
+            check(result.returncode == 0, "--compression %s: %s" % (name, result.stderr))
+            if result.returncode != 0:
+                return
+            with open(refined, "rb") as handle:
+                outputs.append(handle.read())
+        check(outputs[0] == outputs[1], "--compression %s: 1 and 2 threads differ" % name)
+        head = outputs[0][:400]
+        check(b'header_type="UInt64"' in head, name + ": not a 64-bit header")
+        check((header in head) if header else b"compressor=" not in head,
+              name + ": compressor attribute: %r" % head)
+        check(b'<AppendedData encoding="raw">' in outputs[0], name + ": not appended raw data")
+        read = subprocess.run([sys.executable, "-c", READ_BACK, refined, compressor,
+                               os.path.join(scratch, "vtk-%s.vtu" % name)],
+                              capture_output=True, text=True)
+        check(read.returncode == 0, name + ": ParaView's reader failed: " + read.stderr)
+        if read.returncode != 0:
+            continue
+        cells, content, same = read.stdout.split()
+        check(cells == str(64 * 162), "%s: read %s cells" % (name, cells))
+        check(same == "True", name + ": not the file VTK's writer makes of the same grid")
+        contents[name] = content
+    check(len(set(contents.values())) == 1, "the compressions read back differently: %s" % contents)
+    default = os.path.join(scratch, "compressed-default.vtu")
+    stats = os.path.join(scratch, "compressed-default.json")
+    run(cgmesh, "refine", cube, default, "--partitions", "4", "--iterations", "2",
+        "--edge-length-factor", "0.25", "--stats", stats)
+    check(digest(default) == digest(os.path.join(scratch, "compressed-lz4-1.vtu")),
+          "the default is not lz4")
+    with open(stats) as handle:
+        check(json.load(handle).get("compression") == "lz4", "stats lack the compression")
+    out = os.path.join(scratch, "compressed.vtk")
+    expect_early_error(cgmesh, scratch, "compressed legacy file",
+                       ["refine", cube, out, "--compression", "lz4"], out, 2,
+                       "--compression lz4 needs a .vtu output")
+    check(run(cgmesh, "refine", cube, out, "--compression", "none").returncode == 0,
+          "--compression none with a .vtk output")
+    generated = os.path.join(scratch, "generated-zlib.vtu")
+    check(run(cgmesh, "generate", "cube", "2", generated, "--compression", "zlib").returncode == 0
+          and b"vtkZLibDataCompressor" in open(generated, "rb").read(400),
+          "generate --compression zlib")
+    result = run(cgmesh, "tetgen", cube, os.path.join(scratch, "tetgen-none.vtu"), "--max-volume",
+                 "0.01", "--compression", "none")
+    check(result.returncode == 0, "tetgen --compression none: " + result.stderr)
+
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--cgmesh", required=True)
@@ -663,6 +766,7 @@ def main():
     test_nothing_refined(options.cgmesh, options.scratch)
     test_region_array_named(options.cgmesh, options.scratch)
     test_size_forecast(options.cgmesh, options.scratch)
+    test_compression(options.cgmesh, options.scratch)
     if FAILURES:
         print("%d checks failed" % len(FAILURES), file=sys.stderr)
         return 1
