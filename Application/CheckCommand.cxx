@@ -73,6 +73,8 @@ int runCheckCommand(const std::vector<std::string>& commandArguments)
   Status status = Status::success();
   vtkNew<vtkUnstructuredGrid> grid;
   status = readUnstructuredGrid(arguments.inputFile, grid);
+  if (status.ok() && !arguments.regionArrayName.empty())
+    status = checkRegionArray(grid, arguments.regionArrayName, arguments.inputFile);
   if (!status.ok())
     return reportError(status.message());
   const vtkIdType nonTetrahedra = countNonTetrahedra(grid);

@@ -5,6 +5,7 @@
 
 #include "AdaptationOptions.h"
 #include "Core/Status.h"
+#include "MeshFiles.h"
 
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ struct RefineArguments
   std::string outputFile;
   AdaptationOptions options; // the parameter table's defaults, overridden by the options given
   std::string statsFile;     // JSON statistics, written when not empty
+  Compression compression = DefaultCompression;
 };
 
 struct GenerateArguments
@@ -26,6 +28,7 @@ struct GenerateArguments
   int cellsPerSide = 0;     // cube
   int targetCells = 837584; // finfet: about this many tetrahedra
   std::string outputFile;
+  Compression compression = DefaultCompression;
 };
 
 // cgmesh tetgen: serial TetGen on the whole mesh, the baseline of the Delaunay method.
@@ -37,6 +40,7 @@ struct TetGenArguments
   double radiusEdgeRatio = 2.0;
   std::string regionArrayName;
   std::string statsFile; // JSON statistics, written when not empty
+  Compression compression = DefaultCompression;
 };
 
 struct CheckArguments
@@ -51,6 +55,9 @@ bool wantsHelp(const std::vector<std::string>& arguments);
 // The option lines of `cgmesh refine --help`, from the parameter table.
 std::string refineOptionsHelp();
 
+// The `--compression NAME` lines of a command's --help, with the measured write speeds.
+std::string compressionHelp();
+
 // Each parser reads the arguments after the command name.
 Status parseRefineArguments(const std::vector<std::string>& arguments, RefineArguments& parsed);
 Status parseGenerateArguments(const std::vector<std::string>& arguments, GenerateArguments& parsed);
@@ -61,6 +68,8 @@ Status parseCheckArguments(const std::vector<std::string>& arguments, CheckArgum
 Status parseInt(
   const std::string& text, const std::string& what, int minimum, int maximum, int& value);
 Status parseDouble(const std::string& text, const std::string& what, double minimum, double& value);
+// As parseDouble, but the number must be greater than 0.
+Status parsePositiveDouble(const std::string& text, const std::string& what, double& value);
 // Strict parsing of a 64-bit count: the whole text must be an integer >= minimum.
 Status parseCount(
   const std::string& text, const std::string& what, long long minimum, long long& value);

@@ -21,6 +21,9 @@ int reportError(const std::string& message);
 // Exit status for command-line usage errors (distinct from run-time failures).
 constexpr int UsageErrorExitStatus = 2;
 constexpr int FailureExitStatus = 1;
+// Prints the status's message as reportError() does; returns the usage-error status for an
+// InvalidOption failure (arguments that cannot work, such as OUT naming IN), else the failure one.
+int reportFailure(const Status& status);
 
 // The common start of every command: with --help print the usage (exit 0); a parse error is a
 // usage error (exit 2). Returns the exit status to stop with, or -1 to go on with `arguments`.

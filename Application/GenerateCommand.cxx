@@ -23,9 +23,9 @@ namespace
 void printGenerateUsage()
 {
   std::cout
-    << "usage: cgmesh generate cube N OUT.vtu\n"
-       "       cgmesh generate finfet OUT.vtu [--cells N]\n"
-       "       cgmesh generate finfet-grid OUT.vtu [--cells N]\n"
+    << "usage: cgmesh generate cube N OUT.vtu [--compression NAME]\n"
+       "       cgmesh generate finfet OUT.vtu [--cells N] [--compression NAME]\n"
+       "       cgmesh generate finfet-grid OUT.vtu [--cells N] [--compression NAME]\n"
        "\n"
        "cube:        the unit cube cut into N^3 hexahedra of 6 positively oriented tetrahedra\n"
        "             each (N=10: the 6,000-tet Small cube, N=25: the 93,750-tet Big cube).\n"
@@ -37,7 +37,9 @@ void printGenerateUsage()
        "             oxide).\n"
        "finfet-grid: the same device as Kuhn tetrahedra on a graded structured grid whose\n"
        "             planes follow every material boundary.\n"
-       "OUT may be .vtu or .vtk.\n";
+       "OUT may be .vtu or .vtk.\n"
+       "\n"
+    << compressionHelp();
 }
 
 } // namespace
@@ -79,7 +81,7 @@ int runGenerateCommand(const std::vector<std::string>& commandArguments)
     }
     grid->GetFieldData()->AddArray(names);
   }
-  status = writeUnstructuredGrid(grid, arguments.outputFile);
+  status = writeUnstructuredGrid(grid, arguments.outputFile, arguments.compression);
   if (!status.ok())
     return reportError(status.message());
   std::cout << "wrote " << arguments.outputFile << ": " << mesh.numberOfPoints() << " points, "

@@ -1,7 +1,10 @@
 #include "MeshFiles.h"
 
 #include "VTKMessages.h"
+#include "WriterCaches.h"
 
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridReader.h"
@@ -12,6 +15,8 @@
 #include <filesystem>
 #include <system_error>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 namespace cgmesh
 {
@@ -41,7 +46,108 @@ Status unknownFormat(const std::string& fileName)
   return Status::failure("'" + fileName + "': unknown file type (use .vtu or .vtk)");
 }
 
+constexpr std::pair<Compression, const char*> CompressionNames[] = { { Compression::None, "none" },
+  { Compression::LZ4, "lz4" }, { Compression::ZLib, "zlib" } };
+
+// "'a', 'b' and 'c'", or "none".
+std::string listOfNames(const std::vector<std::string>& names)
+{
+  if (names.empty())
+    return "none";
+  std::string list = "'" + names.front() + "'";
+  for (std::size_t index = 1; index < names.size(); ++index)
+    list += (index + 1 == names.size() ? " and '" : ", '") + names[index] + "'";
+  return list;
+}
+
+// True when the two names reach the same file: the same inode when both exist (other spellings,
+// symbolic and hard links), else the same canonical path.
+bool isSameFile(const std::string& first, const std::string& second)
+{
+  std::error_code error;
+  if (std::filesystem::exists(first, error) && std::filesystem::exists(second, error))
+    return std::filesystem::equivalent(first, second, error) && !error;
+  const auto canonical = [](const std::string& name)
+  {
+    std::error_code ignored;
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(name, ignored), ignored);
+  };
+  return canonical(first) == canonical(second);
+}
+
+// The files of a command as (role, name), the one read first: fails with an InvalidOption status
+// when a file written later is the same as an earlier one. Empty names are skipped.
+Status checkDistinctFiles(const std::vector<std::pair<std::string, std::string>>& files)
+{
+  for (std::size_t later = 1; later < files.size(); ++later)
+  {
+    for (std::size_t earlier = 0; earlier < later; ++earlier)
+    {
+      const auto& [laterRole, laterName] = files[later];
+      const auto& [earlierRole, earlierName] = files[earlier];
+      if (laterName.empty() || earlierName.empty() || !isSameFile(earlierName, laterName))
+        continue;
+      return Status::failure(ErrorKind::InvalidOption,
+        laterRole + " '" + laterName + "' is the same file as " + earlierRole + " '" + earlierName +
+          "': writing " + laterRole + " would overwrite " + earlierRole + "; choose another name");
+    }
+  }
+  return Status::success();
+}
+
+// Appended raw binary data: base64 would add a third to the bytes, and the time to encode them.
+void configureXMLWriter(vtkXMLUnstructuredGridWriter* writer, Compression compression)
+{
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  // Uncompressed arrays carry their byte count in the header: 32 bits would stop at 4 GiB.
+  writer->SetHeaderTypeToUInt64();
+  switch (compression)
+  {
+    case Compression::None:
+      writer->SetCompressorTypeToNone();
+      break;
+    case Compression::LZ4:
+      writer->SetCompressorTypeToLZ4();
+      break;
+    case Compression::ZLib:
+      writer->SetCompressorTypeToZLib();
+      // The fastest level: about three times faster than the default for files only slightly
+      // larger.
+      writer->SetCompressionLevel(1);
+      break;
+  }
+}
+
 } // namespace
+
+const char* compressionName(Compression compression)
+{
+  for (const auto& entry : CompressionNames)
+  {
+    if (entry.first == compression)
+      return entry.second;
+  }
+  return "";
+}
+
+bool compressionFromName(const std::string& name, Compression& compression)
+{
+  for (const auto& entry : CompressionNames)
+  {
+    if (name == entry.second)
+    {
+      compression = entry.first;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool isLegacyFileName(const std::string& fileName)
+{
+  return formatOf(fileName) == FileFormat::Legacy;
+}
 
 Status readUnstructuredGrid(const std::string& fileName, vtkUnstructuredGrid* grid)
 {
@@ -86,15 +192,61 @@ Status checkOutputFileName(const std::string& fileName)
 {
   if (formatOf(fileName) == FileFormat::Unknown)
     return unknownFormat(fileName);
-  std::filesystem::path directory = std::filesystem::path(fileName).parent_path();
+  return checkWritableFileName(fileName, "output file");
+}
+
+Status checkWritableFileName(const std::string& fileName, const std::string& what)
+{
+  const std::string cannot = "cannot write " + what + " '" + fileName + "': ";
+  const std::filesystem::path path(fileName);
+  const std::filesystem::path directory = path.parent_path().empty() ? "." : path.parent_path();
   std::error_code error;
-  if (!directory.empty() && !std::filesystem::is_directory(directory, error))
-    return Status::failure(
-      "'" + fileName + "': directory '" + directory.string() + "' does not exist");
+  if (!std::filesystem::is_directory(directory, error))
+    return Status::failure(cannot + "directory '" + directory.string() + "' does not exist");
+  if (::access(directory.c_str(), W_OK | X_OK) != 0)
+    return Status::failure(cannot + "directory '" + directory.string() + "' is not writable");
+  if (std::filesystem::is_directory(path, error))
+    return Status::failure(cannot + "it is a directory");
   return Status::success();
 }
 
-Status writeUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& fileName)
+Status checkCommandFiles(
+  const std::string& input, const std::string& output, const std::string& stats)
+{
+  Status status = checkDistinctFiles({ { "IN", input }, { "OUT", output }, { "--stats", stats } });
+  if (status.ok())
+    status = checkOutputFileName(output);
+  if (status.ok() && !stats.empty())
+    status = checkWritableFileName(stats, "statistics file");
+  return status;
+}
+
+Status checkRegionArray(
+  vtkUnstructuredGrid* grid, const std::string& name, const std::string& fileName)
+{
+  vtkCellData* cellData = grid->GetCellData();
+  std::vector<std::string> all, numeric;
+  for (int index = 0; index < cellData->GetNumberOfArrays(); ++index)
+  {
+    vtkAbstractArray* array = cellData->GetAbstractArray(index);
+    const std::string arrayName = array->GetName() ? array->GetName() : "";
+    all.push_back(arrayName);
+    if (vtkDataArray::SafeDownCast(array))
+      numeric.push_back(arrayName);
+  }
+  vtkAbstractArray* array = cellData->GetAbstractArray(name.c_str());
+  if (!array)
+    return Status::failure("'" + fileName + "' has no cell array '" + name +
+      "' (--region-array); its cell arrays: " + listOfNames(all));
+  if (!vtkDataArray::SafeDownCast(array))
+    return Status::failure("cell array '" + name + "' of '" + fileName +
+      "' is not numeric (--region-array needs region ids); its numeric cell arrays: " +
+      listOfNames(numeric));
+  return Status::success();
+}
+
+Status writeUnstructuredGrid(
+  vtkUnstructuredGrid* grid, const std::string& fileName, Compression compression)
 {
   const FileFormat format = formatOf(fileName);
   if (format == FileFormat::Unknown)
@@ -108,11 +260,8 @@ Status writeUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& fileN
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
     messages->watch(writer);
     writer->SetFileName(temporaryName.c_str());
-    writer->SetInputData(grid);
-    // zlib at its fastest level: about three times faster than the default level for files
-    // only slightly larger.
-    writer->SetCompressorTypeToZLib();
-    writer->SetCompressionLevel(1);
+    writer->SetInputData(gridWithWriterCaches(grid));
+    configureXMLWriter(writer, compression);
     written = writer->Write();
   }
   else

@@ -1,4 +1,5 @@
-// Reading and writing unstructured grids as XML (.vtu) or legacy (.vtk) files, chosen by extension.
+// Reading and writing unstructured grids as XML (.vtu) or legacy (.vtk) files, chosen by extension,
+// and the checks on file names and arrays that the commands make before any long work.
 #ifndef cgmesh_MeshFiles_h
 #define cgmesh_MeshFiles_h
 
@@ -11,16 +12,50 @@ class vtkUnstructuredGrid;
 namespace cgmesh
 {
 
+// How the arrays of a .vtu file are compressed (appended raw binary data in every case). Legacy
+// .vtk files are always written as uncompressed binary.
+enum class Compression
+{
+  None,
+  LZ4,
+  ZLib
+};
+// LZ4: about seven times faster to write than zlib for 40% larger files (see compressionHelp()).
+constexpr Compression DefaultCompression = Compression::LZ4;
+
+// "none", "lz4" or "zlib": the names of --compression.
+const char* compressionName(Compression compression);
+// False for an unknown name.
+bool compressionFromName(const std::string& name, Compression& compression);
+
+// True for a .vtk (legacy) file name.
+bool isLegacyFileName(const std::string& fileName);
+
 // Fails with a one-line message for a missing file, an unknown extension or a reader error.
 Status readUnstructuredGrid(const std::string& fileName, vtkUnstructuredGrid* grid);
 
-// Fails unless `fileName` has a known extension and its directory exists: checked before a long
-// run, so that a typo does not cost a refinement.
+// Fails unless `fileName` has a known extension and can be created (see checkWritableFileName):
+// checked before a long run, so that a typo does not cost a refinement.
 Status checkOutputFileName(const std::string& fileName);
 
+// Fails unless `fileName`'s directory exists and is writable and `fileName` is not a directory.
+// `what` names the file in the message ("statistics file").
+Status checkWritableFileName(const std::string& fileName, const std::string& what);
+
+// What a command checks before it reads `input`: that `output` and `stats` (when not empty) are
+// neither `input` nor each other, by any spelling or link (an InvalidOption failure: writing one
+// would overwrite the other), then that both can be created.
+Status checkCommandFiles(
+  const std::string& input, const std::string& output, const std::string& stats);
+
+// Fails, naming the cell arrays `grid` has, unless it has a numeric cell array `name`.
+Status checkRegionArray(
+  vtkUnstructuredGrid* grid, const std::string& name, const std::string& fileName);
+
 // Writes to a temporary file next to `fileName` and renames it, so a failed write never leaves a
-// partial `fileName` behind.
-Status writeUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& fileName);
+// partial `fileName` behind. The bytes depend only on the grid and `compression`.
+Status writeUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& fileName,
+  Compression compression = DefaultCompression);
 
 } // namespace cgmesh
 

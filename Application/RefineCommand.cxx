@@ -4,9 +4,11 @@
 #include "CommandLine.h"
 #include "Core/Stopwatch.h"
 #include "MeshFiles.h"
+#include "RefineChecks.h"
 #include "RefineReport.h"
 #include "VTKMessages.h"
 
+#include "vtkCellData.h"
 #include "vtkCoarseGrainedMeshAdaptation.h"
 #include "vtkCommand.h"
 #include "vtkFieldData.h"
@@ -38,6 +40,12 @@ void printRefineUsage()
     << "  --stats FILE.json       write counts, colour populations, Delaunay figures,\n"
        "                          improvement counts, the quality summary and phase timings\n"
        "                          as JSON\n"
+    << compressionHelp()
+    << "\n"
+       "Before the input is read, OUT and FILE.json must be creatable and differ from IN and\n"
+       "from each other. With the template method and several iterations, a run whose last\n"
+       "iteration must exceed --max-cells is refused before the first one. A run that adds no\n"
+       "point exits 0 with a warning giving the threshold and the longest edge.\n"
        "\n"
        "Improvement works on tets whose mean ratio 12 (3V)^(2/3) / sum of squared edge\n"
        "lengths (1 = regular) is below 0.5 and keeps a change only when the worst mean ratio\n"
@@ -129,6 +137,40 @@ void removeRunDependentFieldData(vtkUnstructuredGrid* grid)
   }
 }
 
+// What can be checked on the input before refining: the region array and the size forecast.
+Status checkInput(const RefineArguments& arguments, vtkUnstructuredGrid* input)
+{
+  const std::string& regionArray = arguments.options.regionArrayName;
+  // "None" is ParaView's "no array" entry, unless the input has an array of that name.
+  const bool noRegions = regionArray.empty() ||
+    (regionArray == "None" && !input->GetCellData()->GetAbstractArray("None"));
+  if (!noRegions)
+  {
+    const Status status = checkRegionArray(input, regionArray, arguments.inputFile);
+    if (!status.ok())
+      return status;
+  }
+  return checkSizeBeforeRefining(input, arguments.options);
+}
+
+RefineStatistics collectStatistics(const RefineArguments& arguments,
+  vtkCoarseGrainedMeshAdaptation* filter, vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
+{
+  RefineStatistics statistics;
+  statistics.inputFile = arguments.inputFile;
+  statistics.outputFile = arguments.outputFile;
+  statistics.inputPoints = input->GetNumberOfPoints();
+  statistics.inputCells = input->GetNumberOfCells();
+  statistics.numberOfIterations = arguments.options.numberOfIterations;
+  statistics.partitionByRegion = arguments.options.partitionByRegion;
+  statistics.partitionsPerRegion = arguments.options.partitionsPerRegion;
+  statistics.improveQuality = arguments.options.improveQuality;
+  statistics.improvementPasses = arguments.options.improvementPasses;
+  statistics.compression = compressionName(arguments.compression);
+  collectFilterStatistics(filter, output, statistics);
+  return statistics;
+}
+
 } // namespace
 
 int runRefineCommand(const std::vector<std::string>& commandArguments)
@@ -140,16 +182,18 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
   {
     return early;
   }
-  Status status = checkOutputFileName(arguments.outputFile);
+  Status status = checkCommandFiles(arguments.inputFile, arguments.outputFile, arguments.statsFile);
   if (!status.ok())
-    return reportError(status.message());
+    return reportFailure(status);
 
   Stopwatch stopwatch;
   vtkNew<vtkUnstructuredGrid> input;
   status = readUnstructuredGrid(arguments.inputFile, input);
-  if (!status.ok())
-    return reportError(status.message());
   const double readSeconds = stopwatch.lap();
+  if (status.ok())
+    status = checkInput(arguments, input);
+  if (!status.ok())
+    return reportFailure(status);
 
   vtkNew<vtkCoarseGrainedMeshAdaptation> filter;
   vtkNew<vtkUnstructuredGrid> output;
@@ -157,21 +201,14 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
   if (!status.ok())
     return reportError(status.message());
 
-  RefineStatistics statistics;
-  statistics.inputFile = arguments.inputFile;
-  statistics.outputFile = arguments.outputFile;
-  statistics.inputPoints = input->GetNumberOfPoints();
-  statistics.inputCells = input->GetNumberOfCells();
-  statistics.numberOfIterations = arguments.options.numberOfIterations;
-  statistics.partitionByRegion = arguments.options.partitionByRegion;
-  statistics.partitionsPerRegion = arguments.options.partitionsPerRegion;
-  statistics.improveQuality = arguments.options.improveQuality;
-  statistics.improvementPasses = arguments.options.improvementPasses;
-  collectFilterStatistics(filter, output, statistics);
+  RefineStatistics statistics = collectStatistics(arguments, filter, input, output);
+  const std::string nothingRefined = nothingRefinedWarning(input, arguments.options, statistics);
+  if (!nothingRefined.empty())
+    std::cerr << "cgmesh: warning: " << nothingRefined << "\n";
   removeRunDependentFieldData(output);
 
   stopwatch.lap();
-  status = writeUnstructuredGrid(output, arguments.outputFile);
+  status = writeUnstructuredGrid(output, arguments.outputFile, arguments.compression);
   if (!status.ok())
     return reportError(status.message());
   const double writeSeconds = stopwatch.lap();

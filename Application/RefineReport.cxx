@@ -297,6 +297,8 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
   printWarningCounts(statistics, stream);
   printQualitySummaries(statistics, stream);
   stream << "\n"
+         << std::setw(24) << "compression" << statistics.compression << "\n"
+         << "\n"
          << std::setw(24) << "phase"
          << "seconds\n";
   for (const auto& phase : statistics.seconds)
@@ -336,8 +338,8 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"tetgenPoints\": " << statistics.tetgenPoints << ",\n"
        << "  \"tetgenRetries\": " << statistics.tetgenRetries << ",\n"
        << "  \"delaunayFallbacks\": " << statistics.delaunayFallbacks << ",\n"
-       << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ")
-       << "],\n";
+       << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ") << "],\n"
+       << "  \"compression\": " << jsonString(statistics.compression) << ",\n";
   writeImprovementJson(statistics, file);
   file << "  \"colorOfPartition\": [" << joinValues(statistics.colorOfPartition, ", ") << "],\n"
        << "  \"partitionTaskSeconds\": [";

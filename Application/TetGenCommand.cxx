@@ -33,7 +33,7 @@ void printTetGenUsage()
 {
   std::cout
     << "usage: cgmesh tetgen IN OUT --max-volume V [--radius-edge-ratio Q]\n"
-       "                     [--region-array NAME] [--stats FILE.json]\n"
+       "                     [--region-array NAME] [--stats FILE.json] [--compression NAME]\n"
        "\n"
        "Refines the whole tetrahedral mesh IN (.vtu or .vtk) with one serial TetGen call and\n"
        "writes OUT: the baseline of 'cgmesh refine --method delaunay'. TetGen runs with the\n"
@@ -48,7 +48,8 @@ void printTetGenUsage()
        "  --radius-edge-ratio Q   TetGen radius-edge quality bound (switch q), >= 1 (default 2)\n"
        "  --region-array NAME     cell array with material/region ids\n"
        "  --stats FILE.json       write counts and seconds (tetgen, quality, read, write,\n"
-       "                          total) as JSON\n";
+       "                          total) as JSON\n"
+    << compressionHelp();
 }
 
 std::string tetgenSwitches(const TetGenArguments& arguments)
@@ -198,13 +199,15 @@ int runTetGenCommand(const std::vector<std::string>& commandArguments)
   {
     return early;
   }
-  Status status = checkOutputFileName(arguments.outputFile);
+  Status status = checkCommandFiles(arguments.inputFile, arguments.outputFile, arguments.statsFile);
   if (!status.ok())
-    return reportError(status.message());
+    return reportFailure(status);
 
   const Stopwatch stopwatch;
   vtkNew<vtkUnstructuredGrid> input;
   status = readUnstructuredGrid(arguments.inputFile, input);
+  if (status.ok() && !arguments.regionArrayName.empty())
+    status = checkRegionArray(input, arguments.regionArrayName, arguments.inputFile);
   if (!status.ok())
     return reportError(status.message());
   const vtkIdType nonTetrahedra = countNonTetrahedra(input);
@@ -227,7 +230,7 @@ int runTetGenCommand(const std::vector<std::string>& commandArguments)
   run.qualitySeconds = qualityStopwatch.seconds();
 
   const Stopwatch writeStopwatch;
-  status = writeUnstructuredGrid(output, arguments.outputFile);
+  status = writeUnstructuredGrid(output, arguments.outputFile, arguments.compression);
   if (!status.ok())
     return reportError(status.message());
   run.writeSeconds = writeStopwatch.seconds();

@@ -39,6 +39,12 @@ int cgmesh::reportError(const std::string& message)
   return cgmesh::FailureExitStatus;
 }
 
+int cgmesh::reportFailure(const Status& status)
+{
+  reportError(status.message());
+  return status.kind() == ErrorKind::InvalidOption ? UsageErrorExitStatus : FailureExitStatus;
+}
+
 int main(int argc, char* argv[])
 {
   const std::vector<std::string> arguments(argv + 1, argv + argc);

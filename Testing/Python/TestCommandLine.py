@@ -1,13 +1,17 @@
 """Drives the cgmesh executable: generate, refine (XML and legacy files, --stats, every colouring,
 partitioning by region, the Delaunay method, quality improvement options and the quality summary),
-the serial tetgen baseline, check, --help, and the error paths (one line on stderr, non-zero exit,
-no output file)."""
+the serial tetgen baseline, check, --help, the error paths (one line on stderr, non-zero exit,
+no output file), the checks made before refining, and --compression."""
 import argparse
+import hashlib
 import json
+import math
 import os
+import re
 import shutil
 import subprocess
 import sys
+import time
 
 FAILURES = []
 
@@ -20,6 +24,18 @@ def check(condition, message):
 
 def run(cgmesh, *arguments):
     return subprocess.run([cgmesh, *arguments], capture_output=True, text=True)
+
+
+def timed_run(cgmesh, *arguments):
+    """(result, seconds) of one cgmesh run."""
+    start = time.monotonic()
+    result = run(cgmesh, *arguments)
+    return result, time.monotonic() - start
+
+
+def digest(path):
+    with open(path, "rb") as handle:
+        return hashlib.sha256(handle.read()).hexdigest()
 
 
 # A legacy file holding one hexahedron: valid VTK, but not a tetrahedral mesh.
@@ -49,11 +65,14 @@ def test_help(cgmesh):
     for text in ("--coloring", "--partition-by-region", "--partitions-per-region", *COLORINGS,
                  "--method", "delaunay", "--max-volume", "--volume-factor", "--radius-edge-ratio",
                  "--no-improve", "--improve-passes", "mean ratio", "NearFormerInterface",
-                 "--max-cells"):
+                 "--max-cells", "--compression", "lz4 (default)", "M tets/s"):
         check(text in refine_help, "refine --help does not mention " + text)
     tetgen_help = run(cgmesh, "tetgen", "--help").stdout
-    for text in ("--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "rQq"):
+    for text in ("--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "rQq",
+                 "--compression"):
         check(text in tetgen_help, "tetgen --help does not mention " + text)
+    check("--compression" in run(cgmesh, "generate", "--help").stdout,
+          "generate --help does not mention --compression")
 
 
 def check_color_populations(statistics, description):
@@ -441,6 +460,288 @@ def test_errors(cgmesh, scratch):
           "the unknown-colouring error does not name the choices: " + result.stderr)
     check(run(cgmesh, "frobnicate").returncode != 0, "unknown command accepted")
 
+# Seconds within which a run refused before refining must end: its refinement would take far
+# longer, and reading a small input takes milliseconds.
+FAST_SECONDS = 3.0
+
+
+def expect_early_error(cgmesh, scratch, description, arguments, output, exit_status, *texts):
+    """An error before refining: the exit status, one error line holding `texts`, no table (it is
+    printed after the refinement), no output file, and quickly. Returns stderr."""
+    result, seconds = timed_run(cgmesh, *arguments)
+    expect_error(cgmesh, scratch, description, arguments, output, exit_status)
+    for text in texts:
+        check(text in result.stderr, "%s: the error lacks %r: %r" % (description, text, result.stderr))
+    check(result.stdout == "", description + ": it refined before failing: " + result.stdout[:200])
+    check(seconds < FAST_SECONDS, "%s: took %.1f s, expected a refusal before refining"
+          % (description, seconds))
+    return result.stderr
+
+
+def test_stats_checked_first(cgmesh, scratch):
+    """--stats in a missing directory fails like OUT would, before the refinement."""
+    cube10 = os.path.join(scratch, "cube10.vtu")
+    out = os.path.join(scratch, "early.vtu")
+    missing = os.path.join(scratch, "no-such-directory", "s.json")
+    expect_early_error(cgmesh, scratch, "stats in a missing directory",
+                       ["refine", cube10, out, "--iterations", "3", "--edge-length-factor", "0.25",
+                        "--stats", missing], out, 1,
+                       "cannot write statistics file '%s'" % missing, "does not exist")
+    check(not os.path.exists(os.path.dirname(missing)), "the stats directory was created")
+    expect_early_error(cgmesh, scratch, "tetgen stats in a missing directory",
+                       ["tetgen", cube10, out, "--max-volume", "1e-5", "--stats", missing], out, 1,
+                       "cannot write statistics file")
+
+
+def test_output_is_not_input(cgmesh, scratch):
+    """OUT naming IN, by any spelling or a link, is a usage error and leaves IN untouched."""
+    cube = os.path.join(scratch, "cube.vtu")
+    before = digest(cube)
+    link = os.path.join(scratch, "cube-link.vtu")
+    if os.path.lexists(link):
+        os.remove(link)
+    os.symlink(cube, link)
+    spellings = (cube, os.path.join(scratch, ".", "cube.vtu"),
+                 os.path.join(scratch, "..", os.path.basename(scratch), "cube.vtu"), link)
+    for spelling in spellings:
+        result = run(cgmesh, "refine", cube, spelling)
+        check(result.returncode == 2, "OUT %s = IN: exit status %d" % (spelling, result.returncode))
+        check("is the same file as IN" in result.stderr and "would overwrite IN" in result.stderr,
+              "OUT %s = IN: %r" % (spelling, result.stderr))
+        check(result.stdout == "", "OUT %s = IN: it refined" % spelling)
+    for arguments in (["--stats", cube], ["--stats", os.path.join(scratch, "same.vtu")]):
+        result = run(cgmesh, "refine", cube, os.path.join(scratch, "same.vtu"), *arguments)
+        check(result.returncode == 2 and "is the same file as" in result.stderr,
+              "--stats %s: %r" % (arguments[1], result.stderr))
+    result = run(cgmesh, "tetgen", cube, link, "--max-volume", "0.01")
+    check(result.returncode == 2 and "is the same file as IN" in result.stderr,
+          "tetgen OUT = IN: %r" % result.stderr)
+    check(digest(cube) == before and not os.path.islink(cube), "the input was changed")
+    check(os.path.islink(link), "the link was replaced")
+    os.remove(link)
+
+
+def test_option_values(cgmesh, scratch):
+    """Out-of-range values and mistyped options are usage errors, named as such."""
+    cube = os.path.join(scratch, "cube.vtu")
+    out = os.path.join(scratch, "options.vtu")
+    for arguments, text in (
+            (["--edge-length-factor", "0"], "--edge-length-factor must be a number > 0, got '0'"),
+            (["--method", "delaunay", "--volume-factor", "0"],
+             "--volume-factor must be a number > 0, got '0'"),
+            (["--no-improv"], "unknown option '--no-improv' (did you mean '--no-improve'?)"),
+            (["--no-improv", "--threads", "2"], "unknown option '--no-improv'"),
+            (["-p", "4"], "unknown option '-p'"),
+            (["--colour", "greedy"], "unknown option '--colour' (did you mean '--coloring'?)"),
+            (["--stats", "--threads", "2"], "option --stats needs a value"),
+            (["--compression", "gzip"], "unknown compression 'gzip' for --compression (use none, "
+                                        "lz4, zlib)")):
+        expect_early_error(cgmesh, scratch, " ".join(arguments), ["refine", cube, out, *arguments],
+                           out, 2, text)
+    # Recognised before the positionals are counted, wherever they stand.
+    expect_early_error(cgmesh, scratch, "typo before IN", ["refine", "--partitons", "4", cube, out],
+                       out, 2, "unknown option '--partitons' (did you mean '--partitions'?)")
+    expect_early_error(cgmesh, scratch, "check typo", ["check", cube, "--region", "Material"], out,
+                       2, "unknown option '--region'")
+    # A negative number is a value, not an option.
+    expect_early_error(cgmesh, scratch, "negative cube size", ["generate", "cube", "-2", out], out,
+                       2, "N must be an integer in [1, 1000], got '-2'")
+
+
+def test_nothing_refined(cgmesh, scratch):
+    """A threshold above every edge: exit 0, with a warning giving the threshold and the longest
+    edge."""
+    cube = os.path.join(scratch, "cube.vtu")
+    stats = os.path.join(scratch, "unrefined.json")
+    result = run(cgmesh, "refine", cube, os.path.join(scratch, "unrefined.vtu"),
+                 "--edge-length-factor", "5", "--stats", stats)
+    check(result.returncode == 0, "factor 5: " + result.stderr)
+    if result.returncode != 0:
+        return
+    with open(stats) as handle:
+        statistics = json.load(handle)
+    check(statistics["output"]["cells"] == statistics["input"]["cells"], "factor 5 refined")
+    found = re.search(r"cgmesh: warning: nothing was refined: no edge is longer than the threshold "
+                      r"(\S+) \(--edge-length-factor 5 x the mean edge length (\S+)\); the longest "
+                      r"edge is (\S+)", result.stderr)
+    check(found is not None, "factor 5: no nothing-refined warning: %r" % result.stderr)
+    if found:
+        threshold, mean, longest = (float(value) for value in found.groups())
+        check(math.isclose(threshold, statistics["edgeLengthThreshold"], rel_tol=1e-5),
+              "the warning's threshold %s is not the run's" % threshold)
+        check(math.isclose(threshold, 5 * mean, rel_tol=1e-5), "threshold is not 5 x the mean")
+        check(math.isclose(longest, math.sqrt(3) / 3, rel_tol=1e-5),
+              "the longest edge of the 3^3 Kuhn cube is sqrt(3)/3, not %s" % longest)
+    result = run(cgmesh, "refine", cube, os.path.join(scratch, "unrefined-delaunay.vtu"),
+                 "--method", "delaunay", "--max-volume", "10")
+    check(result.returncode == 0 and "cgmesh: warning: nothing was refined: TetGen inserted no "
+          "point under the volume bound 10" in result.stderr,
+          "Delaunay, nothing refined: %r" % result.stderr)
+    result = run(cgmesh, "refine", cube, os.path.join(scratch, "refined-again.vtu"))
+    check("nothing was refined" not in result.stderr, "a refining run warned: " + result.stderr)
+
+
+# Copies a .vtu, adding the vtkStringArray cell array 'Names'.
+ADD_STRING_ARRAY = """import sys
+from vtkmodules.vtkCommonCore import vtkStringArray
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+reader = vtkXMLUnstructuredGridReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+grid = reader.GetOutput()
+names = vtkStringArray()
+names.SetName("Names")
+for cell in range(grid.GetNumberOfCells()):
+    names.InsertNextValue("cell")
+grid.GetCellData().AddArray(names)
+writer = vtkXMLUnstructuredGridWriter()
+writer.SetInputData(grid)
+writer.SetFileName(sys.argv[2])
+sys.exit(0 if writer.Write() == 1 else 1)
+"""
+
+
+def test_region_array_named(cgmesh, scratch):
+    """A missing or non-numeric --region-array is named with the cell arrays there are (exit 1)."""
+    refined = os.path.join(scratch, "refined.vtu")
+    out = os.path.join(scratch, "regions.vtu")
+    for command in (["refine", refined, out], ["tetgen", refined, out, "--max-volume", "0.01"],
+                    ["check", refined]):
+        stderr = expect_early_error(
+            cgmesh, scratch, command[0] + " missing region array",
+            [*command, "--region-array", "NoSuchArray"], out, 1,
+            "has no cell array 'NoSuchArray' (--region-array); its cell arrays: ")
+        for name in ("'PartitionId'", "'ColorId'", "'EdgeRatio'", "'MinDihedralAngle'"):
+            check(name in stderr, "%s: the error does not list %s: %r" % (command[0], name, stderr))
+    cube = os.path.join(scratch, "cube.vtu")
+    expect_early_error(cgmesh, scratch, "region array of an input without arrays",
+                       ["refine", cube, out, "--region-array", "Material"], out, 1,
+                       "has no cell array 'Material' (--region-array); its cell arrays: none")
+    named = os.path.join(scratch, "named.vtu")
+    if subprocess.run([sys.executable, "-c", ADD_STRING_ARRAY, cube, named]).returncode == 0:
+        expect_early_error(cgmesh, scratch, "non-numeric region array",
+                           ["refine", named, out, "--region-array", "Names"], out, 1,
+                           "cell array 'Names' of '%s' is not numeric" % named)
+    else:
+        check(False, "cannot write a file with a string cell array")
+
+
+def test_size_forecast(cgmesh, scratch):
+    """Several template iterations whose last must exceed --max-cells are refused before the
+    first; a run at exactly the limit is not."""
+    cube10 = os.path.join(scratch, "cube10.vtu")
+    out = os.path.join(scratch, "forecast.vtu")
+    expect_early_error(cgmesh, scratch, "10 iterations at 0.001",
+                       ["refine", cube10, out, "--max-edge-length", "0.001", "--iterations", "10"],
+                       out, 1, "refining would produce at least ", "in 10 iterations",
+                       "more than the limit of 100000000 (--max-cells)", "refused before refining")
+    cube = os.path.join(scratch, "cube.vtu")
+    options = ["--partitions", "4", "--iterations", "2", "--edge-length-factor", "0.25"]
+    expect_early_error(cgmesh, scratch, "two iterations over the limit",
+                       ["refine", cube, out, *options, "--max-cells", "5000"], out, 1,
+                       "more than the limit of 5000")
+    result = run(cgmesh, "refine", cube, out, *options, "--max-cells", str(64 * 162))
+    check(result.returncode == 0, "a run making exactly --max-cells tets was refused: "
+          + result.stderr)
+
+
+# Reads a .vtu with ParaView's reader; prints a digest of its points, cells and arrays, and
+# whether VTK's own writer, with the same settings, writes the same file (up to arrays written as
+# empty elements rather than self-closing ones, the trace of cached ranges).
+READ_BACK = """import hashlib, re, sys
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+name, compressor, copy = sys.argv[1:4]
+reader = vtkXMLUnstructuredGridReader()
+reader.SetFileName(name)
+reader.Update()
+grid = reader.GetOutput()
+content = hashlib.sha256()
+content.update(vtk_to_numpy(grid.GetPoints().GetData()).tobytes())
+content.update(vtk_to_numpy(grid.GetCells().GetConnectivityArray()).tobytes())
+content.update(vtk_to_numpy(grid.GetCellTypesArray()).tobytes())
+for data in (grid.GetPointData(), grid.GetCellData()):
+    for index in range(data.GetNumberOfArrays()):
+        content.update(data.GetArrayName(index).encode())
+        content.update(vtk_to_numpy(data.GetArray(index)).tobytes())
+writer = vtkXMLUnstructuredGridWriter()
+writer.SetInputData(grid)
+writer.SetFileName(copy)
+writer.SetDataModeToAppended()
+writer.EncodeAppendedDataOff()
+writer.SetHeaderTypeToUInt64()
+getattr(writer, "SetCompressorTypeTo" + compressor)()
+if compressor == "ZLib":
+    writer.SetCompressionLevel(1)
+writer.Write()
+with open(name, "rb") as first, open(copy, "rb") as second:
+    ours = re.sub(rb">\\n *</DataArray>", b"/>", first.read())
+    same = ours == second.read()
+print(grid.GetNumberOfCells(), content.hexdigest(), same)
+"""
+
+COMPRESSORS = {"none": ("None", None), "lz4": ("LZ4", b"vtkLZ4DataCompressor"),
+               "zlib": ("ZLib", b"vtkZLibDataCompressor")}
+
+
+def test_compression(cgmesh, scratch):
+    """Every --compression reads back in ParaView's reader with the same mesh and arrays, as
+    appended raw data; the file is what VTK's writer makes of the same grid, and the same for 1
+    and 2 threads."""
+    cube = os.path.join(scratch, "cube.vtu")
+    contents = {}
+    for name, (compressor, header) in COMPRESSORS.items():
+        outputs = []
+        for threads in ("1", "2"):
+            refined = os.path.join(scratch, "compressed-%s-%s.vtu" % (name, threads))
+            result = run(cgmesh, "refine", cube, refined, "--partitions", "4", "--iterations", "2",
+                         "--edge-length-factor", "0.25", "--threads", threads,
+                         "--compression", name)
+            check(result.returncode == 0, "--compression %s: %s" % (name, result.stderr))
+            if result.returncode != 0:
+                return
+            with open(refined, "rb") as handle:
+                outputs.append(handle.read())
+        check(outputs[0] == outputs[1], "--compression %s: 1 and 2 threads differ" % name)
+        head = outputs[0][:400]
+        check(b'header_type="UInt64"' in head, name + ": not a 64-bit header")
+        check((header in head) if header else b"compressor=" not in head,
+              name + ": compressor attribute: %r" % head)
+        check(b'<AppendedData encoding="raw">' in outputs[0], name + ": not appended raw data")
+        read = subprocess.run([sys.executable, "-c", READ_BACK, refined, compressor,
+                               os.path.join(scratch, "vtk-%s.vtu" % name)],
+                              capture_output=True, text=True)
+        check(read.returncode == 0, name + ": ParaView's reader failed: " + read.stderr)
+        if read.returncode != 0:
+            continue
+        cells, content, same = read.stdout.split()
+        check(cells == str(64 * 162), "%s: read %s cells" % (name, cells))
+        check(same == "True", name + ": not the file VTK's writer makes of the same grid")
+        contents[name] = content
+    check(len(set(contents.values())) == 1, "the compressions read back differently: %s" % contents)
+    default = os.path.join(scratch, "compressed-default.vtu")
+    stats = os.path.join(scratch, "compressed-default.json")
+    run(cgmesh, "refine", cube, default, "--partitions", "4", "--iterations", "2",
+        "--edge-length-factor", "0.25", "--stats", stats)
+    check(digest(default) == digest(os.path.join(scratch, "compressed-lz4-1.vtu")),
+          "the default is not lz4")
+    with open(stats) as handle:
+        check(json.load(handle).get("compression") == "lz4", "stats lack the compression")
+    out = os.path.join(scratch, "compressed.vtk")
+    expect_early_error(cgmesh, scratch, "compressed legacy file",
+                       ["refine", cube, out, "--compression", "lz4"], out, 2,
+                       "--compression lz4 needs a .vtu output")
+    check(run(cgmesh, "refine", cube, out, "--compression", "none").returncode == 0,
+          "--compression none with a .vtk output")
+    generated = os.path.join(scratch, "generated-zlib.vtu")
+    check(run(cgmesh, "generate", "cube", "2", generated, "--compression", "zlib").returncode == 0
+          and b"vtkZLibDataCompressor" in open(generated, "rb").read(400),
+          "generate --compression zlib")
+    result = run(cgmesh, "tetgen", cube, os.path.join(scratch, "tetgen-none.vtu"), "--max-volume",
+                 "0.01", "--compression", "none")
+    check(result.returncode == 0, "tetgen --compression none: " + result.stderr)
+
+
 
 def main():
     parser = argparse.ArgumentParser()
@@ -457,6 +758,15 @@ def main():
     test_improvement_options(options.cgmesh, options.scratch)
     test_tetgen(options.cgmesh, options.scratch)
     test_errors(options.cgmesh, options.scratch)
+    check(run(options.cgmesh, "generate", "cube", "10",
+              os.path.join(options.scratch, "cube10.vtu")).returncode == 0, "generate cube 10")
+    test_stats_checked_first(options.cgmesh, options.scratch)
+    test_output_is_not_input(options.cgmesh, options.scratch)
+    test_option_values(options.cgmesh, options.scratch)
+    test_nothing_refined(options.cgmesh, options.scratch)
+    test_region_array_named(options.cgmesh, options.scratch)
+    test_size_forecast(options.cgmesh, options.scratch)
+    test_compression(options.cgmesh, options.scratch)
     if FAILURES:
         print("%d checks failed" % len(FAILURES), file=sys.stderr)
         return 1
