@@ -502,7 +502,8 @@ std::string compressionHelp()
   return "  --compression NAME      compression of the arrays of a .vtu OUT, written as appended "
          "raw\n"
          "                          binary data (.vtk files are always uncompressed binary):\n"
-         "                          none, lz4 (default) or zlib (level 1). Writing 1.9 M tets\n"
+         "                          none (default), lz4 or zlib (level 1); of these, meshio\n"
+         "                          reads only zlib (and .vtk files). Writing 1.9 M tets\n"
          "                          on a 2-core VM:\n"
          "                            none    0.27 s   7.2 M tets/s   134 MB\n"
          "                            lz4     0.31 s   6.1 M tets/s    66 MB\n"
@@ -520,6 +521,11 @@ Status parseGenerateOption(
     return parseCompression(value, parsed.outputFile, parsed.compression);
   if (parsed.shape == "cube")
     return Status::failure("option " + name + " is for finfet and finfet-grid, not cube");
+  if (name == "--material-names")
+  {
+    parsed.materialNames = true;
+    return Status::success();
+  }
   return parseInt(value, "--cells", 1000, 500000000, parsed.targetCells);
 }
 
@@ -542,7 +548,8 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
   std::vector<std::string> positionals;
   std::map<std::string, std::string> options;
   Status status =
-    splitArguments(arguments, { { "--cells", "--compression" }, {} }, positionals, options);
+    splitArguments(arguments, { { "--cells", "--compression" }, { "--material-names" } },
+      positionals, options);
   if (!status.ok())
     return status;
   if (positionals.empty())

@@ -270,6 +270,8 @@ Status writeUnstructuredGrid(
     messages->watch(writer);
     writer->SetFileName(temporaryName.c_str());
     writer->SetFileTypeToBinary();
+    // Version 4.2, which every reader of legacy files knows; meshio 5 misreads 5.1's header.
+    writer->SetFileVersion(vtkDataWriter::VTK_LEGACY_READER_VERSION_4_2);
     writer->SetInputData(grid);
     written = writer->Write();
   }

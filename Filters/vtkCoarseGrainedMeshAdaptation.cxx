@@ -15,6 +15,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkLongArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -84,12 +85,14 @@ void addFieldString(vtkFieldData* fieldData, const char* name, const char* value
 void addColorPopulation(
   vtkFieldData* fieldData, const char* name, const std::vector<std::int64_t>& countPerColor)
 {
-  vtkNew<vtkIdTypeArray> array;
+  // A plain 64-bit long array: legacy files name a vtkIdTypeArray's type "vtkIdType", which other
+  // readers (meshio) do not know.
+  vtkNew<vtkLongArray> array;
   array->SetName(name);
   array->SetNumberOfValues(static_cast<vtkIdType>(countPerColor.size()));
   for (size_t color = 0; color < countPerColor.size(); ++color)
   {
-    array->SetValue(static_cast<vtkIdType>(color), static_cast<vtkIdType>(countPerColor[color]));
+    array->SetValue(static_cast<vtkIdType>(color), static_cast<long>(countPerColor[color]));
   }
   fieldData->AddArray(array);
 }
@@ -194,21 +197,30 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "NumberOfPartitions", result.plan.partitions);
   addFieldValue(fieldData, "NumberOfThreads", result.plan.threads);
   addFieldValue(fieldData, "EdgeLengthThreshold", result.plan.edgeLengthThreshold);
-  addFieldString(fieldData, "Method", filter->GetMethodName());
+  const bool diagnostics = filter->GetDiagnostics();
+  if (diagnostics)
+  {
+    addFieldString(fieldData, "Method", filter->GetMethodName());
+  }
+  addFieldValue(fieldData, "MethodIndex", filter->GetMethod());
   addFieldValue(fieldData, "VolumeBound", result.plan.volumeBound);
   addFieldValue(fieldData, "DelaunayFallbacks", static_cast<double>(result.delaunayFallbacks));
   addFieldValue(fieldData, "TetGenPoints", static_cast<double>(result.tetgenPoints));
   addFieldValue(fieldData, "IterationsRun", result.iterationsRun);
   addFieldValue(fieldData, "RefinementConverged", result.refinementConverged ? 1 : 0);
   addFieldValue(fieldData, "TetGenRetries", static_cast<double>(result.tetgenRetries));
-  vtkNew<vtkIntArray> fallbackPartitions; // one tuple per fallback, in refinement order
-  fallbackPartitions->SetName("FallbackPartitions");
-  for (const int partition : result.fallbackPartitions)
+  if (diagnostics)
   {
-    fallbackPartitions->InsertNextValue(partition);
+    vtkNew<vtkIntArray> fallbackPartitions; // one tuple per fallback, in refinement order
+    fallbackPartitions->SetName("FallbackPartitions");
+    for (const int partition : result.fallbackPartitions)
+    {
+      fallbackPartitions->InsertNextValue(partition);
+    }
+    fieldData->AddArray(fallbackPartitions);
+    addFieldString(fieldData, "ColoringAlgorithm", filter->GetColoringAlgorithmName());
   }
-  fieldData->AddArray(fallbackPartitions);
-  addFieldString(fieldData, "ColoringAlgorithm", filter->GetColoringAlgorithmName());
+  addFieldValue(fieldData, "ColoringAlgorithmIndex", filter->GetColoringAlgorithm());
   addColorPopulation(fieldData, "PartitionsPerColor", result.partitionsPerColor);
   addColorPopulation(fieldData, "CellsPerColor", result.cellsPerColor);
   addFieldValue(fieldData, "ColorBalance", result.colorBalance);

@@ -116,6 +116,7 @@ public:
    * ImproveQuality (on) and NumberOfImprovementPasses (2, in [0, 20]).
    * NumberOfThreads (0: all cores; the output does not depend on it).
    * MaximumNumberOfCells (100000000; 0: no limit): the size guard.
+   * Diagnostics (off): also the text and possibly empty field data (names, fallback partitions).
    */
   cgmeshParameterMacro(NumberOfPartitions, int);
   cgmeshTextParameterMacro(RegionArrayName);
@@ -133,6 +134,7 @@ public:
   cgmeshParameterMacro(NumberOfImprovementPasses, int);
   cgmeshParameterMacro(NumberOfThreads, int);
   cgmeshParameterMacro(MaximumNumberOfCells, vtkIdType);
+  cgmeshBooleanParameterMacro(Diagnostics);
   ///@}
 
   ///@{

@@ -45,6 +45,7 @@ struct AdaptationOptions
   int improvementPasses;
   int numberOfThreads;
   std::int64_t maximumNumberOfCells;
+  bool diagnostics;
 
   // For tests and stress runs, not user parameters.
   // Delaunay: run TetGen calls one at a time even where they could overlap.
@@ -124,6 +125,11 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "size guard: refuse, before allocating them, a refinement forecast to make more tets; "
       "0 = no limit",
       &O::maximumNumberOfCells },
+    { "Diagnostics", "--diagnostics", "", K::Boolean, 0, 1, 0, "", S::Any,
+      "also put into the output's field data the diagnostics that are text or may be empty "
+      "(Method and ColoringAlgorithm names, FallbackPartitions), which some readers (meshio) "
+      "refuse; the numbers are always there",
+      &O::diagnostics },
   };
   return table;
 }

@@ -13,6 +13,7 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkLongArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkStringArray.h"
@@ -305,8 +306,8 @@ void checkArrayRange(vtkUnstructuredGrid* output, const char* name, double minim
 std::vector<vtkIdType> fieldValues(vtkUnstructuredGrid* output, const char* name)
 {
   std::vector<vtkIdType> values;
-  auto* array = vtkIdTypeArray::SafeDownCast(output->GetFieldData()->GetArray(name));
-  CGMESH_CHECK(array, "field data " << name << " missing or not a vtkIdTypeArray");
+  auto* array = vtkLongArray::SafeDownCast(output->GetFieldData()->GetArray(name));
+  CGMESH_CHECK(array, "field data " << name << " missing or not a vtkLongArray");
   for (vtkIdType tuple = 0; array && tuple < array->GetNumberOfTuples(); ++tuple)
     values.push_back(array->GetValue(tuple));
   return values;
@@ -316,12 +317,14 @@ std::vector<vtkIdType> fieldValues(vtkUnstructuredGrid* output, const char* name
 // ColorId; ColorBalance is the largest PartitionsPerColor over the mean.
 void checkColorPopulations(vtkUnstructuredGrid* output, int colors, int partitions)
 {
-  auto* stringArray =
-    vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("ColoringAlgorithm"));
-  CGMESH_CHECK(stringArray && stringArray->GetNumberOfValues() == 1 &&
-      vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(stringArray->GetValue(0).c_str()) >=
-        0,
-    "field data ColoringAlgorithm missing or not a colouring name");
+  CGMESH_CHECK(vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmToName(
+                 static_cast<int>(fieldValue(output, "ColoringAlgorithmIndex"))) != nullptr,
+    "field data ColoringAlgorithmIndex missing or not a colouring");
+  // Text and possibly empty diagnostics stay out of the field data unless asked for.
+  CGMESH_CHECK(!output->GetFieldData()->GetAbstractArray("ColoringAlgorithm") &&
+      !output->GetFieldData()->GetAbstractArray("Method") &&
+      !output->GetFieldData()->GetAbstractArray("FallbackPartitions"),
+    "diagnostics in the field data without Diagnostics on");
   const std::vector<vtkIdType> partitionsPerColor = fieldValues(output, "PartitionsPerColor");
   const std::vector<vtkIdType> cellsPerColor = fieldValues(output, "CellsPerColor");
   vtkDataArray* colorIds = output->GetCellData()->GetArray("ColorId");
@@ -378,10 +381,10 @@ void checkOutputArrays(vtkUnstructuredGrid* output)
   checkArrayRange(output, "MinDihedralAngle", 1e-6, 180.0);
   checkArrayRange(output, "NearFormerInterface", 0, 1);
   checkColorPopulations(output, static_cast<int>(colors), static_cast<int>(partitions));
-  auto* method = vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("Method"));
-  CGMESH_CHECK(method && method->GetNumberOfValues() == 1 &&
-      vtkCoarseGrainedMeshAdaptation::MethodFromName(method->GetValue(0).c_str()) >= 0,
-    "field data Method missing or not a method name");
+  const double method = fieldValue(output, "MethodIndex");
+  CGMESH_CHECK(method == vtkCoarseGrainedMeshAdaptation::TEMPLATE ||
+      method == vtkCoarseGrainedMeshAdaptation::DELAUNAY,
+    "field data MethodIndex missing or not a method");
   for (const char* name : { "VolumeBound", "DelaunayFallbacks", "TetGenPoints", "EdgeRemovals",
          "FaceSwaps", "VertexMoves" })
   {

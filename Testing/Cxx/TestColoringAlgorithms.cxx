@@ -21,11 +21,12 @@ namespace
 constexpr int CellsPerSide = 10;
 constexpr int NumberOfPartitions = 64;
 
+// The colouring recorded in the field data (its index: names are diagnostics, off by default).
 std::string storedColoringName(vtkUnstructuredGrid* output)
 {
-  auto* names =
-    vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("ColoringAlgorithm"));
-  return (names && names->GetNumberOfValues() == 1) ? names->GetValue(0) : std::string();
+  const char* name = vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmToName(
+    static_cast<int>(cgmesh_test::fieldValue(output, "ColoringAlgorithmIndex")));
+  return name ? name : std::string();
 }
 
 // The filter's enumeration names exactly the colourings the kernels' registry provides.

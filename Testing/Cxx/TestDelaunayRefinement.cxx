@@ -104,8 +104,9 @@ void checkRegions(const TestCase& testCase, vtkUnstructuredGrid* output)
 // along partition and material interfaces, whose edges stop at the interface edge length).
 void checkDelaunayFieldData(const TestCase& testCase, vtkUnstructuredGrid* output)
 {
-  auto* method = vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("Method"));
-  CGMESH_CHECK(method && method->GetValue(0) == "delaunay", "field data Method is not delaunay");
+  CGMESH_CHECK(cgmesh_test::fieldValue(output, "MethodIndex") ==
+      vtkCoarseGrainedMeshAdaptation::DELAUNAY,
+    "field data MethodIndex is not Delaunay");
   const double bound = cgmesh_test::fieldValue(output, "VolumeBound");
   const cgmesh::MeshReport inputReport = cgmesh_test::inspectGrid(testCase.input, std::string());
   const double expectedBound =
@@ -114,8 +115,7 @@ void checkDelaunayFieldData(const TestCase& testCase, vtkUnstructuredGrid* outpu
     "VolumeBound " << bound << " != factor x mean tet volume " << expectedBound);
   const double fallbacks = cgmesh_test::fieldValue(output, "DelaunayFallbacks");
   vtkDataArray* fallbackPartitions = output->GetFieldData()->GetArray("FallbackPartitions");
-  CGMESH_CHECK(fallbackPartitions && fallbackPartitions->GetNumberOfTuples() == fallbacks,
-    "FallbackPartitions does not hold one tuple per fallback");
+  CGMESH_CHECK(!fallbackPartitions, "FallbackPartitions written without Diagnostics");
   // TetGen's aborts on the lattice's degenerate point sets are recovered by the second attempt.
   CGMESH_CHECK(fallbacks == 0, fallbacks << " fallbacks");
   const double retries = cgmesh_test::fieldValue(output, "TetGenRetries");

@@ -29,6 +29,7 @@ def test_delaunay():
     adaptation.NumberOfPartitions = 16
     adaptation.VolumeFactor = 0.2
     adaptation.NumberOfThreads = 2
+    adaptation.Diagnostics = 1
     adaptation.UpdatePipeline()
 
     source = servermanager.Fetch(cube)
@@ -88,9 +89,10 @@ def main():
     for name in ("NumberOfColors", "NumberOfPartitions", "TotalSeconds", "PartitionsPerColor",
                  "CellsPerColor", "ColorBalance"):
         check(refined.GetFieldData().GetArray(name) is not None, "field data %s missing" % name)
-    coloring = refined.GetFieldData().GetAbstractArray("ColoringAlgorithm")
-    check(coloring is not None and coloring.GetValue(0) == "recoloring",
+    check(refined.GetFieldData().GetArray("ColoringAlgorithmIndex").GetValue(0) == 3,
           "the filter did not run the colouring chosen by label")
+    check(refined.GetFieldData().GetAbstractArray("ColoringAlgorithm") is None,
+          "a text diagnostic in the field data without Diagnostics")
 
     test_delaunay()
     if FAILURES:
