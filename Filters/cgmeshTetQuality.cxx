@@ -7,10 +7,10 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
-#include "vtkTypeInt32Array.h"
-#include "vtkTypeInt64Array.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>

@@ -503,7 +503,8 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   }
 
   cgmesh::AdaptationResult result;
-  status = cgmesh::adaptMesh(inputMesh, makeOptions(this, this->Internals->Parameters, input), result);
+  status =
+    cgmesh::adaptMesh(inputMesh, makeOptions(this, this->Internals->Parameters, input), result);
   this->Internals->LastSummary = result.summary;
   this->Internals->LastQualitySeconds = 0;
   this->Internals->HasRun = true;

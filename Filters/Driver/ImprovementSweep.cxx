@@ -46,13 +46,7 @@ std::vector<PartitionMesh> regroupIntoBoxes(std::vector<PartitionMesh>& partitio
           0, std::min(cells, static_cast<int>(std::floor((centroid - low[axis]) / size[axis]))));
         box = box * (cells + 1) + index;
       }
-      PartitionMesh& target = boxes[box];
-      target.tets.push_back(partition.tets[t]);
-      target.parentCells.push_back(partition.parentCells[t]);
-      if (!partition.regions.empty())
-      {
-        target.regions.push_back(partition.regions[t]);
-      }
+      appendTetOf(partition, t, boxes[box]);
     }
     partition = PartitionMesh();
   }
@@ -119,13 +113,7 @@ PartitionMesh setAsideSettledTets(
         touches =
           touches || (p < static_cast<PointId>(formerInterface.size()) && formerInterface[p]);
       }
-      PartitionMesh& target = touches ? seam : settled;
-      target.tets.push_back(partition.tets[t]);
-      target.parentCells.push_back(partition.parentCells[t]);
-      if (!partition.regions.empty())
-      {
-        target.regions.push_back(partition.regions[t]);
-      }
+      appendTetOf(partition, t, touches ? seam : settled);
     }
     partition = std::move(seam);
   }

@@ -3,6 +3,7 @@
 #define TETLIBRARY
 #include <tetgen.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include <sys/socket.h>
 #include <sys/time.h>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 namespace cgmesh
@@ -183,8 +185,20 @@ bool receiveMesh(int socket, tetgenio& io)
 
 } // namespace
 
+namespace
+{
+
+// More workers than cores only add processes that wait for a core.
+std::size_t workerCount(int requested)
+{
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  return std::min(static_cast<std::size_t>(std::max(requested, 1)), cores);
+}
+
+} // namespace
+
 TetGenWorkerPool::TetGenWorkerPool(int workers)
-  : Workers(static_cast<std::size_t>(workers > 0 ? workers : 1))
+  : Workers(workerCount(workers))
 {
   for (Worker& worker : this->Workers)
   {
@@ -248,10 +262,15 @@ void TetGenWorkerPool::stop(Worker& worker, bool kill)
   {
     ::kill(worker.process, SIGKILL);
   }
-  if (worker.socket >= 0)
   {
-    ::close(worker.socket); // the worker reads end of input and leaves
-    worker.socket = -1;
+    // Under the fork lock: a child forked meanwhile would otherwise close this descriptor
+    // number after its reuse, possibly as its own new socket.
+    std::lock_guard<std::mutex> lock(this->Forking);
+    if (worker.socket >= 0)
+    {
+      ::close(worker.socket); // the worker reads end of input and leaves
+      worker.socket = -1;
+    }
   }
   if (worker.process > 0)
   {
@@ -266,7 +285,9 @@ void TetGenWorkerPool::stop(Worker& worker, bool kill)
 std::string TetGenWorkerPool::run(
   int index, const tetgenio& in, const std::string& switches, tetgenio& out)
 {
-  Worker& worker = this->Workers.at(static_cast<std::size_t>(index));
+  Worker& worker =
+    this->Workers[static_cast<std::size_t>(std::max(index, 0)) % this->Workers.size()];
+  std::lock_guard<std::mutex> turn(worker.busy);
   if (worker.socket < 0 && !this->start(worker))
   {
     return "could not start a TetGen worker process";

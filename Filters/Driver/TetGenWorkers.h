@@ -23,21 +23,23 @@ namespace cgmesh
 class TetGenWorkerPool
 {
 public:
-  // Starts `workers` processes (forked now, from the calling thread).
+  // Starts `workers` processes, at most one per core (forked now, from the calling thread).
   explicit TetGenWorkerPool(int workers);
   ~TetGenWorkerPool();
   TetGenWorkerPool(const TetGenWorkerPool&) = delete;
   TetGenWorkerPool& operator=(const TetGenWorkerPool&) = delete;
 
-  // Runs TetGen with `switches` on `in` in worker `worker` (0 <= worker < workers; one caller per
-  // worker at a time) and fills `out`. Returns an empty string on success, else why it failed.
+  // Runs TetGen with `switches` on `in` in worker `worker` modulo the number of workers (callers
+  // that share a worker take turns) and fills `out`. Returns an empty string on success, else
+  // why it failed.
   std::string run(int worker, const tetgenio& in, const std::string& switches, tetgenio& out);
 
 private:
   struct Worker
   {
     pid_t process = -1;
-    int socket = -1;
+    int socket = -1; // changed under Forking only: a forking thread reads every worker's
+    std::mutex busy; // one request at a time
   };
   bool start(Worker& worker);
   void stop(Worker& worker, bool kill);

@@ -17,6 +17,17 @@ struct PartitionMesh
   std::vector<CellId> parentCells;
 };
 
+// Appends tet `t` of `from`, with its region and parent, to `to`.
+inline void appendTetOf(const PartitionMesh& from, std::size_t t, PartitionMesh& to)
+{
+  to.tets.push_back(from.tets[t]);
+  to.parentCells.push_back(from.parentCells[t]);
+  if (!from.regions.empty())
+  {
+    to.regions.push_back(from.regions[t]);
+  }
+}
+
 } // namespace cgmesh
 
 #endif

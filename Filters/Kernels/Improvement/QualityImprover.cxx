@@ -662,13 +662,7 @@ PartitionMesh extractSelected(PartitionMesh& partition, const std::vector<char>&
   PartitionMesh chosen, rest;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
-    PartitionMesh& target = selected[t] ? chosen : rest;
-    target.tets.push_back(partition.tets[t]);
-    target.parentCells.push_back(partition.parentCells[t]);
-    if (!partition.regions.empty())
-    {
-      target.regions.push_back(partition.regions[t]);
-    }
+    appendTetOf(partition, t, selected[t] ? chosen : rest);
   }
   partition = std::move(rest);
   return chosen;
