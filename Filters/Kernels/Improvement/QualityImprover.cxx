@@ -637,20 +637,23 @@ void Improver::writeBack(std::vector<PointId>& movedPoints)
 std::vector<char> neighbourhoodOfPoorTets(
   const PartitionMesh& partition, const std::vector<char>& poor)
 {
-  std::unordered_set<PointId> poorVertices;
+  std::vector<PointId> poorVertices;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     if (poor[t])
     {
-      poorVertices.insert(partition.tets[t].begin(), partition.tets[t].end());
+      poorVertices.insert(poorVertices.end(), partition.tets[t].begin(), partition.tets[t].end());
     }
   }
+  std::sort(poorVertices.begin(), poorVertices.end());
+  poorVertices.erase(std::unique(poorVertices.begin(), poorVertices.end()), poorVertices.end());
   std::vector<char> selected(partition.tets.size(), 0);
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     for (PointId p : partition.tets[t])
     {
-      selected[t] = selected[t] || poorVertices.count(p) > 0;
+      selected[t] =
+        selected[t] || std::binary_search(poorVertices.begin(), poorVertices.end(), p);
     }
   }
   return selected;
@@ -690,8 +693,8 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
-    poor[t] = meanRatio(points.at(tet[0]), points.at(tet[1]), points.at(tet[2]),
-                points.at(tet[3])) < parameters.targetQuality;
+    poor[t] = meanRatioBelow(points.at(tet[0]), points.at(tet[1]), points.at(tet[2]),
+      points.at(tet[3]), parameters.targetQuality);
     poorTets += poor[t];
   }
   statistics.poorTets += poorTets;
