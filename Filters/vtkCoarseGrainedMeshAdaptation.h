@@ -34,10 +34,11 @@
  * NearFormerInterface (vtkUnsignedCharArray, 1 for a tet touching a vertex that lay on an interface
  * between refinement partitions), and field data
  * with the colour, partition and thread counts, the (interface) edge length threshold, the method
- * (Method, by name), VolumeBound, DelaunayFallbacks, FallbackPartitions (one tuple per fallback)
- * TetGenPoints and TetGenRetries (partitions whose first TetGen call failed and was made again with
- * the tets in reverse order; all 0 or empty for Template), the
- * colouring (ColoringAlgorithm, by name), the colour populations (PartitionsPerColor and
+ * (MethodIndex), VolumeBound, DelaunayFallbacks, TetGenPoints and TetGenRetries (partitions whose
+ * first TetGen call failed and was made again with the tets in reverse order; all 0 for
+ * Template), IterationsRun and RefinementConverged, the colouring (ColoringAlgorithmIndex), and
+ * with Diagnostics also Method and ColoringAlgorithm by name and FallbackPartitions (one tuple per
+ * fallback); the colour populations (PartitionsPerColor and
  * CellsPerColor, one tuple per colour), ColorBalance (largest colour over the mean, in partitions),
  * the improvement counts (EdgeRemovals, FaceSwaps, VertexMoves)
  * and the seconds spent per phase (PrepareSeconds, PartitionSeconds, GraphSeconds, ColorSeconds,
