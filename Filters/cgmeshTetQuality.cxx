@@ -5,12 +5,13 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkDoubleArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -32,11 +33,18 @@ void tetCorners(const Connectivity* connectivity, vtkIdType cellId, vtkIdType co
   }
 }
 
+// From the type array (vtkUnstructuredGrid::IsHomogeneous would build the distinct types slowly).
 bool allCellsAreTets(vtkUnstructuredGrid* grid)
 {
-  vtkCellArray* cells = grid->GetCells();
-  return cells->GetNumberOfConnectivityIds() == 4 * grid->GetNumberOfCells() &&
-    cells->IsHomogeneous() == 4;
+  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+  if (!types || types->GetNumberOfValues() != grid->GetNumberOfCells() ||
+    grid->GetCells()->GetNumberOfConnectivityIds() != 4 * grid->GetNumberOfCells())
+  {
+    return false;
+  }
+  const unsigned char* type = types->GetPointer(0);
+  return std::all_of(
+    type, type + types->GetNumberOfValues(), [](unsigned char t) { return t == VTK_TETRA; });
 }
 
 } // namespace
