@@ -547,9 +547,8 @@ Status parseGenerateArguments(const std::vector<std::string>& arguments, Generat
 {
   std::vector<std::string> positionals;
   std::map<std::string, std::string> options;
-  Status status =
-    splitArguments(arguments, { { "--cells", "--compression" }, { "--material-names" } },
-      positionals, options);
+  Status status = splitArguments(
+    arguments, { { "--cells", "--compression" }, { "--material-names" } }, positionals, options);
   if (!status.ok())
     return status;
   if (positionals.empty())

@@ -24,9 +24,9 @@ struct RefineArguments
 
 struct GenerateArguments
 {
-  std::string shape;        // "cube" or "finfet"
-  int cellsPerSide = 0;     // cube
-  int targetCells = 837584; // finfet: about this many tetrahedra
+  std::string shape;          // "cube" or "finfet"
+  int cellsPerSide = 0;       // cube
+  int targetCells = 837584;   // finfet: about this many tetrahedra
   bool materialNames = false; // finfet: the names as a string array in the field data
   std::string outputFile;
   Compression compression = DefaultCompression;

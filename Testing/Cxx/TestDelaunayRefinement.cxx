@@ -104,8 +104,8 @@ void checkRegions(const TestCase& testCase, vtkUnstructuredGrid* output)
 // along partition and material interfaces, whose edges stop at the interface edge length).
 void checkDelaunayFieldData(const TestCase& testCase, vtkUnstructuredGrid* output)
 {
-  CGMESH_CHECK(cgmesh_test::fieldValue(output, "MethodIndex") ==
-      vtkCoarseGrainedMeshAdaptation::DELAUNAY,
+  CGMESH_CHECK(
+    cgmesh_test::fieldValue(output, "MethodIndex") == vtkCoarseGrainedMeshAdaptation::DELAUNAY,
     "field data MethodIndex is not Delaunay");
   const double bound = cgmesh_test::fieldValue(output, "VolumeBound");
   const cgmesh::MeshReport inputReport = cgmesh_test::inspectGrid(testCase.input, std::string());

@@ -652,8 +652,7 @@ std::vector<char> neighbourhoodOfPoorTets(
   {
     for (PointId p : partition.tets[t])
     {
-      selected[t] =
-        selected[t] || std::binary_search(poorVertices.begin(), poorVertices.end(), p);
+      selected[t] = selected[t] || std::binary_search(poorVertices.begin(), poorVertices.end(), p);
     }
   }
   return selected;
