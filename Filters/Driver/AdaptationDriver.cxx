@@ -29,13 +29,7 @@ std::vector<char> markNearFormerInterface(
   {
     for (const Tet& tet : partition.tets)
     {
-      bool touches = false;
-      for (PointId p : tet)
-      {
-        touches =
-          touches || (p < static_cast<PointId>(formerInterface.size()) && formerInterface[p]);
-      }
-      near.push_back(touches ? 1 : 0);
+      near.push_back(touchesFlaggedPoint(tet, formerInterface) ? 1 : 0);
     }
   }
   return near;

@@ -107,13 +107,8 @@ PartitionMesh setAsideSettledTets(
     PartitionMesh seam;
     for (std::size_t t = 0; t < partition.tets.size(); ++t)
     {
-      bool touches = false;
-      for (PointId p : partition.tets[t])
-      {
-        touches =
-          touches || (p < static_cast<PointId>(formerInterface.size()) && formerInterface[p]);
-      }
-      appendTetOf(partition, t, touches ? seam : settled);
+      appendTetOf(
+        partition, t, touchesFlaggedPoint(partition.tets[t], formerInterface) ? seam : settled);
     }
     partition = std::move(seam);
   }

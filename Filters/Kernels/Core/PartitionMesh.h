@@ -17,6 +17,19 @@ struct PartitionMesh
   std::vector<CellId> parentCells;
 };
 
+// Whether a corner of `tet` is flagged (points beyond the flags' end are not).
+inline bool touchesFlaggedPoint(const Tet& tet, const std::vector<char>& flagged)
+{
+  for (PointId p : tet)
+  {
+    if (p < static_cast<PointId>(flagged.size()) && flagged[p])
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Appends tet `t` of `from`, with its region and parent, to `to`.
 inline void appendTetOf(const PartitionMesh& from, std::size_t t, PartitionMesh& to)
 {
