@@ -190,6 +190,22 @@ void interpolateIdTypeArrays(vtkPointData* inputPointData,
   }
 }
 
+// The field data some readers refuse (string arrays, an array that may be empty): only with
+// Diagnostics on.
+void addTextDiagnostics(const cgmesh::AdaptationSummary& result,
+  vtkCoarseGrainedMeshAdaptation* filter, vtkFieldData* fieldData)
+{
+  addFieldString(fieldData, "Method", filter->GetMethodName());
+  addFieldString(fieldData, "ColoringAlgorithm", filter->GetColoringAlgorithmName());
+  vtkNew<vtkIntArray> fallbackPartitions; // one tuple per fallback, in refinement order
+  fallbackPartitions->SetName("FallbackPartitions");
+  for (const int partition : result.fallbackPartitions)
+  {
+    fallbackPartitions->InsertNextValue(partition);
+  }
+  fieldData->AddArray(fallbackPartitions);
+}
+
 void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshAdaptation* filter,
   double qualitySeconds, double totalSeconds, vtkFieldData* fieldData)
 {
@@ -197,11 +213,6 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "NumberOfPartitions", result.plan.partitions);
   addFieldValue(fieldData, "NumberOfThreads", result.plan.threads);
   addFieldValue(fieldData, "EdgeLengthThreshold", result.plan.edgeLengthThreshold);
-  const bool diagnostics = filter->GetDiagnostics();
-  if (diagnostics)
-  {
-    addFieldString(fieldData, "Method", filter->GetMethodName());
-  }
   addFieldValue(fieldData, "MethodIndex", filter->GetMethod());
   addFieldValue(fieldData, "VolumeBound", result.plan.volumeBound);
   addFieldValue(fieldData, "DelaunayFallbacks", static_cast<double>(result.delaunayFallbacks));
@@ -209,18 +220,11 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "IterationsRun", result.iterationsRun);
   addFieldValue(fieldData, "RefinementConverged", result.refinementConverged ? 1 : 0);
   addFieldValue(fieldData, "TetGenRetries", static_cast<double>(result.tetgenRetries));
-  if (diagnostics)
-  {
-    vtkNew<vtkIntArray> fallbackPartitions; // one tuple per fallback, in refinement order
-    fallbackPartitions->SetName("FallbackPartitions");
-    for (const int partition : result.fallbackPartitions)
-    {
-      fallbackPartitions->InsertNextValue(partition);
-    }
-    fieldData->AddArray(fallbackPartitions);
-    addFieldString(fieldData, "ColoringAlgorithm", filter->GetColoringAlgorithmName());
-  }
   addFieldValue(fieldData, "ColoringAlgorithmIndex", filter->GetColoringAlgorithm());
+  if (filter->GetDiagnostics())
+  {
+    addTextDiagnostics(result, filter, fieldData);
+  }
   addColorPopulation(fieldData, "PartitionsPerColor", result.partitionsPerColor);
   addColorPopulation(fieldData, "CellsPerColor", result.cellsPerColor);
   addFieldValue(fieldData, "ColorBalance", result.colorBalance);
@@ -300,7 +304,7 @@ void fillOutput(
 {
   cgmesh::convertToUnstructuredGrid(result.mesh, output);
   copyCellDataToChildren(input->GetCellData(), result.parentCell, output->GetCellData());
-  if (input->GetPointData()->GetNumberOfArrays() > 0) // else the driver made no provenance
+  if (!result.provenance.offsets.empty()) // made only for inputs with point data
   {
     interpolatePointData(input->GetPointData(), result.provenance, output->GetPointData());
     interpolateIdTypeArrays(input->GetPointData(), result.provenance, output->GetPointData());

@@ -129,6 +129,25 @@ PointProvenance expandProvenance(PointId inputPointCount,
   return all;
 }
 
+// The provenance of the points some tet uses (outputIdOf >= 0), in output order.
+void keepProvenanceOfUsedPoints(
+  const PointProvenance& all, const std::vector<PointId>& outputIdOf, PointProvenance& kept)
+{
+  kept.offsets.push_back(0);
+  for (std::size_t p = 0; p < outputIdOf.size(); ++p)
+  {
+    if (outputIdOf[p] < 0)
+    {
+      continue;
+    }
+    kept.sources.insert(kept.sources.end(), all.sources.begin() + all.offsets[p],
+      all.sources.begin() + all.offsets[p + 1]);
+    kept.weights.insert(kept.weights.end(), all.weights.begin() + all.offsets[p],
+      all.weights.begin() + all.offsets[p + 1]);
+    kept.offsets.push_back(static_cast<std::int64_t>(kept.sources.size()));
+  }
+}
+
 } // namespace
 
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
@@ -161,33 +180,20 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
     merged = MergedMesh();
     merged.removedPoints = globalCount - outputCount;
 
-    const PointProvenance all = withProvenance
-      ? expandProvenance(inputPointCount, newPointSources, coordinates, relocation)
-      : PointProvenance();
     merged.mesh.coordinates.reserve(3 * outputCount);
-    if (withProvenance)
-    {
-      merged.provenance.offsets.reserve(outputCount + 1);
-      merged.provenance.offsets.push_back(0);
-    }
     for (PointId p = 0; p < globalCount; ++p)
     {
-      if (outputIdOf[p] < 0)
+      if (outputIdOf[p] >= 0)
       {
-        continue;
+        merged.mesh.coordinates.insert(merged.mesh.coordinates.end(), coordinates.begin() + 3 * p,
+          coordinates.begin() + 3 * p + 3);
       }
-      merged.mesh.coordinates.insert(merged.mesh.coordinates.end(), coordinates.begin() + 3 * p,
-        coordinates.begin() + 3 * p + 3);
-      if (!withProvenance)
-      {
-        continue;
-      }
-      merged.provenance.sources.insert(merged.provenance.sources.end(),
-        all.sources.begin() + all.offsets[p], all.sources.begin() + all.offsets[p + 1]);
-      merged.provenance.weights.insert(merged.provenance.weights.end(),
-        all.weights.begin() + all.offsets[p], all.weights.begin() + all.offsets[p + 1]);
-      merged.provenance.offsets.push_back(
-        static_cast<std::int64_t>(merged.provenance.sources.size()));
+    }
+    if (withProvenance)
+    {
+      keepProvenanceOfUsedPoints(
+        expandProvenance(inputPointCount, newPointSources, coordinates, relocation), outputIdOf,
+        merged.provenance);
     }
 
     const bool hasRegions = std::any_of(partitions.begin(), partitions.end(),
