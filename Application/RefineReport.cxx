@@ -229,6 +229,9 @@ void collectFilterStatistics(
   statistics.outputCells = output->GetNumberOfCells();
   statistics.numberOfColors = summary.numberOfColors;
   statistics.numberOfPartitions = summary.plan.partitions;
+  statistics.partitioner =
+    vtkCoarseGrainedMeshAdaptation::PartitionerToName(static_cast<int>(summary.plan.partitioner));
+  statistics.interfacePoints = summary.interfacePoints;
   statistics.numberOfThreads = summary.plan.threads;
   statistics.edgeLengthThreshold = summary.plan.edgeLengthThreshold;
   statistics.coloring = filter->GetColoringAlgorithmName();
@@ -268,8 +271,9 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
          << std::setw(24) << "partitions" << statistics.numberOfPartitions
          << (statistics.partitionByRegion
                 ? " (by region, " + std::to_string(statistics.partitionsPerRegion) + " per region)"
-                : std::string())
+                : " (" + statistics.partitioner + ")")
          << "\n"
+         << std::setw(24) << "interface points" << statistics.interfacePoints << "\n"
          << std::setw(24) << "coloring" << statistics.coloring << "\n"
          << std::setw(24) << "colors" << statistics.numberOfColors << "\n"
          << std::setw(24) << "partitions per color"
@@ -324,6 +328,8 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "},\n"
        << "  \"colors\": " << statistics.numberOfColors << ",\n"
        << "  \"partitions\": " << statistics.numberOfPartitions << ",\n"
+       << "  \"partitioner\": " << jsonString(statistics.partitioner) << ",\n"
+       << "  \"interfacePoints\": " << statistics.interfacePoints << ",\n"
        << "  \"partitionByRegion\": " << (statistics.partitionByRegion ? "true" : "false") << ",\n"
        << "  \"partitionsPerRegion\": " << statistics.partitionsPerRegion << ",\n"
        << "  \"coloring\": " << jsonString(statistics.coloring) << ",\n"

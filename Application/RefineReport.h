@@ -37,6 +37,8 @@ struct RefineStatistics
   std::int64_t outputCells = 0;
   int numberOfColors = 0;
   int numberOfPartitions = 0;
+  std::string partitioner;
+  std::int64_t interfacePoints = 0; // input points in tets of two or more partitions
   int numberOfThreads = 0;
   int numberOfIterations = 0;
   double edgeLengthThreshold = 0;               // the (interface) edge length threshold

@@ -221,6 +221,8 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "RefinementConverged", result.refinementConverged ? 1 : 0);
   addFieldValue(fieldData, "TetGenRetries", static_cast<double>(result.tetgenRetries));
   addFieldValue(fieldData, "ColoringAlgorithmIndex", filter->GetColoringAlgorithm());
+  // The partitioner used: Automatic resolved to METIS or Hilbert.
+  addFieldValue(fieldData, "PartitionerIndex", static_cast<int>(result.plan.partitioner));
   if (filter->GetDiagnostics())
   {
     addTextDiagnostics(result, filter, fieldData);
@@ -432,6 +434,18 @@ const char* vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmToName(int algorith
 int vtkCoarseGrainedMeshAdaptation::ColoringAlgorithmFromName(const char* name)
 {
   return choiceValue("ColoringAlgorithm", name);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkCoarseGrainedMeshAdaptation::PartitionerToName(int partitioner)
+{
+  return choiceName("Partitioner", partitioner);
+}
+
+//------------------------------------------------------------------------------
+int vtkCoarseGrainedMeshAdaptation::PartitionerFromName(const char* name)
+{
+  return choiceValue("Partitioner", name);
 }
 
 //------------------------------------------------------------------------------

@@ -34,14 +34,14 @@
  * NearFormerInterface (vtkUnsignedCharArray, 1 for a tet touching a vertex that lay on an interface
  * between refinement partitions), and field data
  * with the colour, partition and thread counts, the (interface) edge length threshold, the method
- * (MethodIndex), VolumeBound, DelaunayFallbacks, TetGenPoints and TetGenRetries (partitions whose
- * first TetGen call failed and was made again with the tets in reverse order; all 0 for
- * Template), IterationsRun and RefinementConverged, the colouring (ColoringAlgorithmIndex), and
- * with Diagnostics also Method and ColoringAlgorithm by name and FallbackPartitions (one tuple per
- * fallback); the colour populations (PartitionsPerColor and
- * CellsPerColor, one tuple per colour), ColorBalance (largest colour over the mean, in partitions),
- * the improvement counts (EdgeRemovals, FaceSwaps, VertexMoves)
- * and the seconds spent per phase (PrepareSeconds, PartitionSeconds, GraphSeconds, ColorSeconds,
+ * (MethodIndex), the partitioner used (PartitionerIndex: METIS or HILBERT), VolumeBound,
+ * DelaunayFallbacks, TetGenPoints and TetGenRetries (partitions whose first TetGen call failed and
+ * was made again with the tets in reverse order; all 0 for Template), IterationsRun and
+ * RefinementConverged, the colouring (ColoringAlgorithmIndex), and with Diagnostics also Method and
+ * ColoringAlgorithm by name and FallbackPartitions (one tuple per fallback); the colour populations
+ * (PartitionsPerColor and CellsPerColor, one tuple per colour), ColorBalance (largest colour over
+ * the mean, in partitions), the improvement counts (EdgeRemovals, FaceSwaps, VertexMoves) and the
+ * seconds spent per phase (PrepareSeconds, PartitionSeconds, GraphSeconds, ColorSeconds,
  * HealSeconds, AdaptSeconds, ImproveSeconds, PostSeconds, MergeSeconds, QualitySeconds,
  * TotalSeconds; each second is charged to one phase only). Progress never decreases. The output
  * does not depend on NumberOfThreads.
@@ -105,9 +105,10 @@ public:
    * (Filters/Driver/AdaptationOptions.h), which also gives the command line's options and --help;
    * out-of-range values are clamped to the range.
    *
-   * NumberOfPartitions (default 1024): METIS partitions, reduced with a warning for a smaller mesh.
-   * RegionArrayName (default none): numeric cell array of material/region ids; unset, empty or
-   * "None" (ParaView's "no array" entry) means one region, unless the input has a cell array
+   * NumberOfPartitions (default 0, automatic): partitions, reduced with a warning for a smaller
+   * mesh. Partitioner (AUTOMATIC_PARTITIONER): METIS on the dual graph or runs along a Hilbert
+   * curve. RegionArrayName (default none): numeric cell array of material/region ids; unset, empty
+   * or "None" (ParaView's "no array" entry) means one region, unless the input has a cell array
    * called "None". Any other name that is not a cell array of the input is an error.
    * PartitionByRegion (off) and PartitionsPerRegion (1): cut along the regions instead of METIS on
    * the whole mesh (needs RegionArrayName).
@@ -120,6 +121,7 @@ public:
    * Diagnostics (off): also the text and possibly empty field data (names, fallback partitions).
    */
   cgmeshParameterMacro(NumberOfPartitions, int);
+  cgmeshParameterMacro(Partitioner, int);
   cgmeshTextParameterMacro(RegionArrayName);
   cgmeshBooleanParameterMacro(PartitionByRegion);
   cgmeshParameterMacro(PartitionsPerRegion, int);
@@ -162,6 +164,40 @@ public:
   double GetLastTotalSeconds() const;
   ///@}
 #endif
+
+  /**
+   * How the mesh is cut into partitions (values of Partitioner).
+   */
+  enum Partitioners
+  {
+    AUTOMATIC_PARTITIONER = 0, // Hilbert for Template, METIS for Delaunay
+    METIS = 1,                 // METIS k-way on the dual graph
+    HILBERT = 2                // equal runs along a Hilbert curve through the tet centroids
+  };
+  void SetPartitionerToAutomatic()
+  {
+    this->SetPartitioner(AUTOMATIC_PARTITIONER);
+  }
+  void SetPartitionerToMetis()
+  {
+    this->SetPartitioner(METIS);
+  }
+  void SetPartitionerToHilbert()
+  {
+    this->SetPartitioner(HILBERT);
+  }
+  const char* GetPartitionerName()
+  {
+    return PartitionerToName(this->GetPartitioner());
+  }
+  ///@{
+  /**
+   * Conversion between Partitioners values and their names ("auto", "metis", "hilbert"); nullptr or
+   * -1 for an unknown one.
+   */
+  static const char* PartitionerToName(int partitioner);
+  static int PartitionerFromName(const char* name);
+  ///@}
 
   /**
    * Serial refinement kernels run on the partitions (values of Method).

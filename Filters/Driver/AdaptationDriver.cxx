@@ -5,6 +5,7 @@
 #include "Coloring/PartitionColoring.h"
 #include "ImprovementSweep.h"
 #include "ParallelFor.h"
+#include "Partitioning/HilbertPartitioner.h"
 #include "Partitioning/MeshPartitioner.h"
 #include "TetGenWorkers.h"
 #include "Validation/InputPreparation.h"
@@ -61,9 +62,19 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   int partitions = plan.partitions;
   PartitioningOptions partitioning;
   partitioning.contiguous = options.method == RefinementMethod::Delaunay;
-  Status status = options.partitionByRegion
-    ? partitionByRegion(input, options.partitionsPerRegion, partitionOfCell, partitions)
-    : partitionMesh(input, plan.partitions, partitionOfCell, partitioning);
+  Status status = Status::success();
+  if (options.partitionByRegion)
+  {
+    status = partitionByRegion(input, options.partitionsPerRegion, partitionOfCell, partitions);
+  }
+  else if (plan.partitioner == PartitionerKind::Hilbert)
+  {
+    status = partitionAlongHilbertCurve(input, plan.partitions, partitionOfCell);
+  }
+  else
+  {
+    status = partitionMesh(input, plan.partitions, partitionOfCell, partitioning);
+  }
   if (!status.ok())
   {
     return status;
@@ -78,6 +89,7 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
 
   reporter.enter(Phase::Graph);
   graph = buildPartitionGraph(input.tets, partitionOfCell, plan.partitions, input.numberOfPoints());
+  summary.interfacePoints = graph.interfacePoints;
   reporter.progress(Stage::Partition, 0.9);
 
   reporter.enter(Phase::Color);

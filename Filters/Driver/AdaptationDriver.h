@@ -24,6 +24,7 @@ struct AdaptationSummary
 {
   AdaptationPlan plan;
   int numberOfColors = 0;
+  std::int64_t interfacePoints = 0;             // input points in tets of two or more partitions
   std::vector<int> colorOfPartition;            // the refinement colouring
   std::vector<std::int64_t> partitionsPerColor; // colour population, in partitions
   std::vector<std::int64_t> cellsPerColor;      // colour population, in output tets

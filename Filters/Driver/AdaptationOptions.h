@@ -24,12 +24,20 @@ enum class RefinementMethod
   Delaunay  // templates on interfaces, TetGen inside partitions
 };
 
+enum class PartitionerKind
+{
+  Automatic, // Hilbert for templates, METIS for Delaunay (resolved in the plan)
+  Metis,     // METIS k-way on the dual graph
+  Hilbert    // equal runs along a Hilbert curve through the tet centroids
+};
+
 struct AdaptationOptions
 {
   AdaptationOptions() { applyDefaults(*this); }
 
   // User parameters: documented in parameterTable() below, which also sets their defaults.
   int numberOfPartitions;
+  PartitionerKind partitioner;
   std::string regionArrayName; // read by the VTK adapter, which fills TetMesh::regions
   bool partitionByRegion;
   int partitionsPerRegion;
@@ -71,10 +79,23 @@ inline const std::vector<ParameterSpec>& parameterTable()
   using O = AdaptationOptions;
   static const std::vector<ParameterSpec> table = {
     { "NumberOfPartitions", "--partitions", "N", K::Integer, 0, INT_MAX, 0, "", S::Any,
-      "METIS partitions; 0 = automatic: 1024 for Template, for Delaunay one per about 30,000 "
+      "partitions; 0 = automatic: 1024 for Template, for Delaunay one per about 30,000 "
       "forecast output tets (64 to 1024); reduced to the number of tets of a smaller mesh (with "
       "a warning when requested); not used with PartitionByRegion",
       &O::numberOfPartitions },
+    { "Partitioner", "--partitioner", "NAME", K::Choice, 0, 2, 0, "", S::Any,
+      "how the mesh is cut into NumberOfPartitions parts; not used with PartitionByRegion, "
+      "which runs METIS inside each region",
+      &O::partitioner,
+      { { "auto", "Automatic",
+          "Hilbert for Template (no serial graph partitioning; templates do not mind the longer "
+          "interfaces), METIS for Delaunay (short interfaces: fewer pre-split interface edges)" },
+        { "metis", "METIS",
+          "k-way on the dual graph: compact parts, short interfaces; its cost "
+          "grows with the partition count" },
+        { "hilbert", "Hilbert",
+          "equal runs along a Hilbert curve through the tet centroids: one sort, the same cost "
+          "for any count, longer interfaces" } } },
     { "RegionArrayName", "--region-array", "NAME", K::Text, 0, 0, 0, "", S::Any,
       "numeric cell array of material/region ids (empty or None: one region)",
       &O::regionArrayName },

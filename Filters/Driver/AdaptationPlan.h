@@ -15,8 +15,9 @@ namespace cgmesh
 
 struct AdaptationPlan
 {
-  int threads = 1;                   // 0 in the options means every core
-  int partitions = 1;                // refinement partitions (after clamping, or by region)
+  int threads = 1;    // 0 in the options means every core
+  int partitions = 1; // refinement partitions (after clamping, or by region)
+  PartitionerKind partitioner = PartitionerKind::Metis; // never Automatic; METIS by region
   double edgeLengthThreshold = 0;    // template threshold, or Delaunay's interface edge length
   double volumeBound = 0;            // Delaunay: the absolute volume bound; 0 for templates
   int boxesPerAxis = 1;              // improvement sweeps: boxes along each axis

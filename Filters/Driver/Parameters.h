@@ -15,6 +15,7 @@ namespace cgmesh
 
 struct AdaptationOptions;
 enum class RefinementMethod;
+enum class PartitionerKind;
 
 enum class ParameterKind
 {
@@ -45,7 +46,7 @@ struct ParameterChoice
 // Where the value lives in AdaptationOptions.
 using ParameterField = std::variant<int AdaptationOptions::*, std::int64_t AdaptationOptions::*,
   double AdaptationOptions::*, bool AdaptationOptions::*, RefinementMethod AdaptationOptions::*,
-  std::string AdaptationOptions::*>;
+  PartitionerKind AdaptationOptions::*, std::string AdaptationOptions::*>;
 
 constexpr double Unbounded = std::numeric_limits<double>::infinity();
 // The largest Count the numeric interface (doubles) carries exactly: 2^53.

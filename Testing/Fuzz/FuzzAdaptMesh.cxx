@@ -146,6 +146,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.coloring =
     std::vector<const char*>{ "greedy", "greedy-lu", "iterative", "recoloring" }[bytes.next() % 4];
   options.maximumNumberOfCells = 2000000;
+  options.partitioner = static_cast<PartitionerKind>(bytes.next() % 3); // auto, METIS, Hilbert
 
   const bool inputValid = inspectMesh(input).isValid();
   const TetMesh copy = input;

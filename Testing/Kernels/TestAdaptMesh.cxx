@@ -115,6 +115,27 @@ void test_every_coloring_gives_identical_output_across_threads()
   }
 }
 
+// Templates use Hilbert runs by default; METIS must work for them as well, down to one tet per
+// partition.
+void test_each_partitioner_conforms_for_any_thread_count()
+{
+  const TetMesh input = cubeWithRegions(6);
+  for (PartitionerKind partitioner : { PartitionerKind::Metis, PartitionerKind::Hilbert })
+  {
+    for (int partitions : { 64, 1296 })
+    {
+      AdaptationOptions options;
+      options.partitioner = partitioner;
+      const AdaptationResult serial = refine(input, partitions, 1, 2, options);
+      CHECK(serial.summary.plan.partitioner == partitioner);
+      checkRefinedCube(input, serial, 2);
+      CHECK(serial.summary.interfacePoints > 0);
+      CHECK(cgmesh_test::identicalResults(serial, refine(input, partitions, 2, 2, options)));
+      CHECK(cgmesh_test::identicalResults(serial, refine(input, partitions, 3, 2, options)));
+    }
+  }
+}
+
 void test_partition_by_region()
 {
   const TetMesh input = cubeWithRegions(6);
@@ -273,6 +294,7 @@ int main()
 {
   test_cube_refinement_at_partition_counts();
   test_every_coloring_gives_identical_output_across_threads();
+  test_each_partitioner_conforms_for_any_thread_count();
   test_partition_by_region();
   test_partition_count_clamped_to_tets();
   test_automatic_partition_count();

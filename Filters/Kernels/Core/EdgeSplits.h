@@ -3,13 +3,14 @@
 #ifndef cgmesh_EdgeSplits_h
 #define cgmesh_EdgeSplits_h
 
+#include "Core/FlatHashMap.h"
 #include "Core/TetMesh.h"
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <functional>
-#include <unordered_map>
+#include <limits>
 #include <vector>
 
 namespace cgmesh
@@ -53,8 +54,33 @@ struct PointSource
   }
 };
 
+struct NoEdge
+{
+  static EdgeKey value()
+  {
+    return { std::numeric_limits<PointId>::min(), std::numeric_limits<PointId>::min() };
+  }
+};
+
 // Midpoint vertex of each split edge.
-using EdgeMidpointMap = std::unordered_map<EdgeKey, PointId, EdgeKeyHash>;
+using EdgeMidpointMap = FlatHashMap<EdgeKey, PointId, EdgeKeyHash, NoEdge>;
+
+struct PointIdHash
+{
+  std::size_t operator()(PointId id) const
+  {
+    std::uint64_t x = static_cast<std::uint64_t>(id) * 0x9E3779B97F4A7C15ull;
+    return static_cast<std::size_t>(x ^ (x >> 32));
+  }
+};
+
+struct NoPoint
+{
+  static PointId value() { return std::numeric_limits<PointId>::min(); }
+};
+
+// A set of point ids (the value is unused).
+using PointIdSet = FlatHashMap<PointId, char, PointIdHash, NoPoint>;
 
 // One split of an edge that may be shared with partitions processed later in the same iteration:
 // the edge's two global end points and the global id of the vertex inserted on it.

@@ -42,7 +42,8 @@ PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
   const auto extra = collectExtraMemberships(tets, partitionOfCell, firstPartition);
   std::vector<std::pair<int, int>> edges;
   std::vector<int> members;
-  for (std::size_t begin = 0; begin < extra.size();)
+  std::int64_t interfacePoints = 0;
+  for (std::size_t begin = 0; begin < extra.size(); ++interfacePoints)
   {
     const PointId point = extra[begin].first;
     members.assign(1, firstPartition[point]);
@@ -60,7 +61,9 @@ PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
     }
     begin = end;
   }
-  return makePartitionGraph(numberOfPartitions, std::move(edges));
+  PartitionGraph graph = makePartitionGraph(numberOfPartitions, std::move(edges));
+  graph.interfacePoints = interfacePoints;
+  return graph;
 }
 
 PartitionGraph makePartitionGraph(int numberOfPartitions, std::vector<std::pair<int, int>> edges)

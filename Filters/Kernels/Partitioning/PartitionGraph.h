@@ -15,6 +15,7 @@ struct PartitionGraph
   int numberOfPartitions = 0;
   std::vector<std::int64_t> offsets; // size numberOfPartitions + 1
   std::vector<int> neighbours;       // sorted within each row
+  std::int64_t interfacePoints = 0;  // points in tets of two or more partitions
 
   int degree(int partition) const
   {

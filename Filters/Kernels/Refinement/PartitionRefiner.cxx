@@ -38,17 +38,15 @@ public:
   PointId midpointOf(PointId a, PointId b)
   {
     const EdgeKey key = EdgeKey::of(a, b);
-    const auto known = this->Created.find(key);
-    if (known != this->Created.end())
+    if (const PointId* known = this->Created.find(key))
     {
-      return known->second;
+      return *known;
     }
     PointId vertex;
-    const auto healed = this->Received.find(key);
-    if (healed != this->Received.end())
+    if (const PointId* healed = this->Received.find(key))
     {
-      vertex = healed->second;
-      this->Refinement.newInterfacePoints.insert(vertex);
+      vertex = *healed;
+      this->Refinement.newInterfacePoints.emplace(vertex, 0);
       ++this->Refinement.healedSplits;
     }
     else
@@ -78,7 +76,7 @@ private:
     if (this->onInterface(key.low) && this->onInterface(key.high))
     {
       this->Refinement.outbox.push_back(OutboxEntry{ key, vertex });
-      this->Refinement.newInterfacePoints.insert(vertex);
+      this->Refinement.newInterfacePoints.emplace(vertex, 0);
     }
     return vertex;
   }
@@ -91,7 +89,7 @@ private:
     {
       return flags[id] != 0;
     }
-    return this->Refinement.newInterfacePoints.count(id) != 0;
+    return this->Refinement.newInterfacePoints.contains(id);
   }
 
   const RefinementContext& Context;

@@ -50,7 +50,7 @@ struct PartitionRefinement
   Outbox outbox;
   // Vertices this partition made or received during the iteration that lie on an interface
   // (older ones are flagged in RefinementContext::interfaceVertex).
-  std::unordered_set<PointId> newInterfacePoints;
+  PointIdSet newInterfacePoints;
   std::vector<PointId> movedPoints; // vertices quality improvement moved
   std::int64_t healedSplits = 0;    // splits taken from neighbours' outboxes
   std::int64_t createdSplits = 0;   // splits this partition made itself

@@ -1,0 +1,118 @@
+#include "Partitioning/HilbertPartitioner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace cgmesh
+{
+
+std::uint64_t hilbertIndex(std::array<std::uint32_t, 3> cell, int bits)
+{
+  // Walk the levels from the coarsest: at each level the lower bits are reflected or swapped so
+  // that the sub-cube reached is entered the way the curve enters it (Skilling's "transpose"
+  // form of the Hilbert index), then the three coordinates are Gray-decoded into one index.
+  const std::uint32_t top = 1u << (bits - 1);
+  for (std::uint32_t level = top; level > 1; level >>= 1)
+  {
+    const std::uint32_t lower = level - 1;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (cell[axis] & level)
+      {
+        cell[0] ^= lower;
+      }
+      else
+      {
+        const std::uint32_t swapped = (cell[0] ^ cell[axis]) & lower;
+        cell[0] ^= swapped;
+        cell[axis] ^= swapped;
+      }
+    }
+  }
+  cell[1] ^= cell[0];
+  cell[2] ^= cell[1];
+  std::uint32_t flip = 0;
+  for (std::uint32_t level = top; level > 1; level >>= 1)
+  {
+    if (cell[2] & level)
+    {
+      flip ^= level - 1;
+    }
+  }
+  std::uint64_t index = 0;
+  for (int bit = bits - 1; bit >= 0; --bit)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      index = (index << 1) | (((cell[axis] ^ flip) >> bit) & 1u);
+    }
+  }
+  return index;
+}
+
+Status partitionAlongHilbertCurve(
+  const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell)
+{
+  const CellId tetCount = mesh.numberOfTets();
+  partitionOfCell.assign(tetCount, 0);
+  if (numberOfPartitions < 1)
+  {
+    return Status::failure(ErrorKind::InvalidOption, "the number of partitions must be at least 1");
+  }
+  if (numberOfPartitions > 1 && numberOfPartitions > tetCount)
+  {
+    return Status::failure(ErrorKind::InvalidOption, "more partitions than tets");
+  }
+  if (numberOfPartitions == 1)
+  {
+    return Status::success();
+  }
+
+  // Centroids (times 4) on one cubic grid over the tets' bounding box, so that the curve keeps
+  // the same resolution along every axis.
+  std::vector<std::array<double, 3>> centroids(tetCount);
+  std::array<double, 3> low, high;
+  low.fill(std::numeric_limits<double>::infinity());
+  high.fill(-std::numeric_limits<double>::infinity());
+  for (CellId t = 0; t < tetCount; ++t)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      double sum = 0;
+      for (PointId corner : mesh.tets[t])
+      {
+        sum += mesh.point(corner)[axis];
+      }
+      centroids[t][axis] = sum;
+      low[axis] = std::min(low[axis], sum);
+      high[axis] = std::max(high[axis], sum);
+    }
+  }
+  constexpr int Bits = 21;
+  constexpr double LastCell = (1u << Bits) - 1;
+  const double extent = std::max({ high[0] - low[0], high[1] - low[1], high[2] - low[2], 1e-300 });
+  std::vector<std::pair<std::uint64_t, CellId>> order(tetCount);
+  for (CellId t = 0; t < tetCount; ++t)
+  {
+    std::array<std::uint32_t, 3> cell;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double scaled = (centroids[t][axis] - low[axis]) / extent * LastCell;
+      cell[axis] = static_cast<std::uint32_t>(std::clamp(scaled, 0.0, LastCell));
+    }
+    order[t] = { hilbertIndex(cell, Bits), t };
+  }
+  std::sort(order.begin(), order.end());
+
+  // Run r holds the tets at positions [r n / k, (r + 1) n / k).
+  for (CellId position = 0; position < tetCount; ++position)
+  {
+    partitionOfCell[order[position].second] =
+      static_cast<int>(position * numberOfPartitions / tetCount);
+  }
+  return Status::success();
+}
+
+} // namespace cgmesh

@@ -1,0 +1,29 @@
+// Splits a tet mesh into partitions of equal tet counts along a Hilbert curve through the tets'
+// centroids. It needs no dual graph and no graph partitioner: a key per tet and one sort, so it
+// costs the same for 64 or 65,536 partitions. The price is a longer interface than METIS' and
+// parts that may be disconnected where the domain is not convex.
+#ifndef cgmesh_HilbertPartitioner_h
+#define cgmesh_HilbertPartitioner_h
+
+#include "Core/Status.h"
+#include "Core/TetMesh.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace cgmesh
+{
+
+// Position along the 3D Hilbert curve of order `bits` (at most 21) of a point on the integer grid
+// [0, 2^bits)^3.
+std::uint64_t hilbertIndex(std::array<std::uint32_t, 3> cell, int bits);
+
+// Assigns every tet a partition in [0, numberOfPartitions): the tets ordered by the Hilbert index
+// of their centroid (ties by tet id) are cut into runs of equal size. Deterministic.
+Status partitionAlongHilbertCurve(
+  const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell);
+
+} // namespace cgmesh
+
+#endif
