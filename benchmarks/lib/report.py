@@ -4,6 +4,19 @@ import os
 PHASES = ("partition", "graph", "color", "heal", "adapt", "post", "improve", "merge", "quality")
 
 
+
+def partitioner_text(results):
+    """Which partitioner each method's runs used, from their stats (runs before the stats named
+    it used METIS)."""
+    used = {}
+    for case in results["cases"]:
+        for run in case["runs"]:
+            name = (run.get("stats") or {}).get("partitioner", "metis")
+            used.setdefault(run["method"], set()).add({"metis": "METIS",
+                                                       "hilbert": "Hilbert"}.get(name, name))
+    return ", ".join("%s: %s" % (method.capitalize(), " and ".join(sorted(names)))
+                     for method, names in sorted(used.items(), reverse=True))
+
 def runs_of(case, method, coloring):
     return sorted((r for r in case["runs"]
                    if r["method"] == method and r["coloring"] == coloring),
@@ -305,8 +318,9 @@ def write(results, folder):
     if results.get("notes"):
         lines += ["## Deviations and notes", ""] + ["- " + n for n in results["notes"]] + [""]
     lines += ["## Cases and parameters", "",
-              "1,024 METIS partitions; colourings greedy and greedy-lu; every configuration "
-              "at %s thread(s)." % ", ".join(str(t) for t in results["threads"]), ""]
+              "1,024 partitions (%s); colourings greedy and greedy-lu; every configuration "
+              "at %s thread(s)." % (partitioner_text(results),
+                                    ", ".join(str(t) for t in results["threads"])), ""]
     lines += parameter_lines(results)
     lines += ["", "## Headline", "",
               "Speedups are filter totals (`seconds.total` of the stats: partition to quality "
