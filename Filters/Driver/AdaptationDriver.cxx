@@ -143,14 +143,14 @@ void attachTetGen(const AdaptationOptions& options, ColorLoopSetup& setup,
   summary.concurrentTetGen = !serialize && threads > 1;
   TetGenWorkerPool* pool = workers.get();
   setup.runTetGen = [pool, serialize, &serialTetGen](
-                      const tetgenio& in, const std::string& switches, tetgenio& out)
+                      int partition, const tetgenio& in, const std::string& switches, tetgenio& out)
   {
     if (serialize)
     {
       std::lock_guard<std::mutex> lock(serialTetGen);
-      return pool->run(0, in, switches, out);
+      return pool->run(0, in, switches, out, partition);
     }
-    return pool->run(currentThreadIndex(), in, switches, out);
+    return pool->run(currentThreadIndex(), in, switches, out, partition);
   };
 }
 
