@@ -14,6 +14,7 @@
 #include <memory>
 #include <mutex>
 #include <new>
+#include <sstream>
 #include <string>
 
 namespace cgmesh
@@ -154,14 +155,14 @@ void attachTetGen(const AdaptationOptions& options, ColorLoopSetup& setup,
   summary.concurrentTetGen = !serialize && threads > 1;
   TetGenWorkerPool* pool = workers.get();
   setup.runTetGen = [pool, serialize, &serialTetGen](
-                      const tetgenio& in, const std::string& switches, tetgenio& out)
+                      int partition, const tetgenio& in, const std::string& switches, tetgenio& out)
   {
     if (serialize)
     {
       std::lock_guard<std::mutex> lock(serialTetGen);
-      return pool->run(0, in, switches, out);
+      return pool->run(0, in, switches, out, partition);
     }
-    return pool->run(currentThreadIndex(), in, switches, out);
+    return pool->run(currentThreadIndex(), in, switches, out, partition);
   };
 }
 
@@ -263,22 +264,33 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   return Status::success();
 }
 
-void reportRepairs(const InputRepairs& repairs, AdaptationSummary& summary)
+void reportRepairs(const TetMesh& input, const InputRepairs& repairs, AdaptationSummary& summary)
 {
   summary.reorientedTets = repairs.reorientedTets;
-  summary.mergedPoints = repairs.mergedPoints;
+  summary.gluedPoints = repairs.gluedPoints;
+  summary.keptApartPoints = repairs.keptApartPoints;
   if (repairs.reorientedTets > 0)
   {
     summary.warnings.push_back({ WarningKind::InvertedTetsReoriented, -1,
       "turned around " + std::to_string(repairs.reorientedTets) +
         " inverted tetrahedra: the output is consistently positively oriented" });
   }
-  if (repairs.mergedPoints > 0)
+  if (repairs.gluedPoints > 0)
   {
     summary.warnings.push_back({ WarningKind::CoincidentPointsMerged, -1,
-      "merged " + std::to_string(repairs.mergedPoints) +
-        " points that repeat another point's coordinates: parts touching without shared nodes "
-        "are joined" });
+      "merged " + std::to_string(repairs.gluedPoints) +
+        " points that repeat the corners of matching faces: touching parts are glued where "
+        "their faces match" });
+  }
+  if (repairs.keptApartPoints > 0)
+  {
+    const double* x = input.point(repairs.firstKeptApartPoint);
+    std::ostringstream text;
+    text << "kept " << repairs.keptApartPoints << " coincident points apart (the first is point "
+         << repairs.firstKeptApartPoint << " at (" << x[0] << ", " << x[1] << ", " << x[2]
+         << ")): they are not corners of faces that match across the contact, so the parts "
+            "touching there are refined separately and stay unconnected";
+    summary.warnings.push_back({ WarningKind::CoincidentPointsKeptApart, -1, text.str() });
   }
 }
 
@@ -297,7 +309,7 @@ Status adaptMesh(
   {
     InputRepairs repairs;
     status = prepareInput(rawInput, input, repairs);
-    reportRepairs(repairs, summary);
+    reportRepairs(rawInput, repairs, summary);
   }
   if (status.ok())
   {

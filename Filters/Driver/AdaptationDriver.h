@@ -36,11 +36,12 @@ struct AdaptationSummary
   // already met the threshold or bound), which sets `refinementConverged`.
   int iterationsRun = 0;
   bool refinementConverged = false;
-  std::int64_t tetgenRetries = 0;  // partition refinements whose first TetGen call failed
-  bool concurrentTetGen = false;   // TetGen calls overlapped (in worker processes)
-  std::int64_t reorientedTets = 0; // inverted input tets that were turned around
-  std::int64_t mergedPoints = 0;   // input points merged into a coincident one
-  std::int64_t edgeRemovals = 0;   // quality improvement operations
+  std::int64_t tetgenRetries = 0;   // partition refinements whose first TetGen call failed
+  bool concurrentTetGen = false;    // TetGen calls overlapped (in worker processes)
+  std::int64_t reorientedTets = 0;  // inverted input tets that were turned around
+  std::int64_t gluedPoints = 0;     // copies of matching faces' corners merged into one point
+  std::int64_t keptApartPoints = 0; // input points left distinct from a coincident one
+  std::int64_t edgeRemovals = 0;    // quality improvement operations
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
   std::int64_t poorTets = 0; // tets below the improvement target when first looked at

@@ -11,11 +11,12 @@ namespace cgmesh
 
 enum class WarningKind
 {
-  PartitionsReduced,      // more partitions requested than the mesh has tets
-  InvertedTetsReoriented, // input tets with negative volume were turned around
-  CoincidentPointsMerged, // input points with equal coordinates were merged
-  UnusedPointsRemoved,    // points no tet uses were left out of the output
-  DelaunayFallback        // TetGen failed on a partition, refined by templates instead
+  PartitionsReduced,         // more partitions requested than the mesh has tets
+  InvertedTetsReoriented,    // input tets with negative volume were turned around
+  CoincidentPointsMerged,    // copies of the corners of matching faces were glued into one point
+  CoincidentPointsKeptApart, // coincident points not on matching faces were left distinct
+  UnusedPointsRemoved,       // points no tet uses were left out of the output
+  DelaunayFallback           // TetGen failed on a partition, refined by templates instead
 };
 
 // The kind's name in reports ("delaunay-fallback").
@@ -29,6 +30,8 @@ inline const char* warningKindName(WarningKind kind)
       return "inverted-tets-reoriented";
     case WarningKind::CoincidentPointsMerged:
       return "coincident-points-merged";
+    case WarningKind::CoincidentPointsKeptApart:
+      return "coincident-points-kept-apart";
     case WarningKind::UnusedPointsRemoved:
       return "unused-points-removed";
     case WarningKind::DelaunayFallback:

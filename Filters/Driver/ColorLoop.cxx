@@ -57,8 +57,14 @@ TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& stat
     const auto& failing = iteration.options.simulateTetGenFailureIn;
     parameters.simulateFailure =
       std::find(failing.begin(), failing.end(), partition) != failing.end();
+    const PartitionTetGenRunner& runner = iteration.setup.runTetGen;
+    const TetGenRunner runTetGen = [&runner, partition](
+                                     const tetgenio& in, const std::string& switches, tetgenio& out)
+    {
+      return runner(partition, in, switches, out);
+    };
     report.status = refinePartitionDelaunay(state.partitions[partition], iteration.refinement,
-      received, parameters, iteration.setup.runTetGen, refinement, report.delaunay);
+      received, parameters, runTetGen, refinement, report.delaunay);
   }
   report.seconds = stopwatch.seconds();
   return report;

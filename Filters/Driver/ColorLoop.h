@@ -12,6 +12,8 @@
 #include "Refinement/TemplateTable.h"
 #include "Refinement/TetGenRefiner.h"
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace cgmesh
@@ -27,6 +29,10 @@ struct AdaptationState
   std::vector<PointId> movedPoints;         // points quality improvement moved (may repeat)
 };
 
+// Delaunay: how a partition calls TetGen; the partition id reaches the worker pool's test hook.
+using PartitionTetGenRunner = std::function<std::string(
+  int partition, const tetgenio& in, const std::string& switches, tetgenio& out)>;
+
 struct ColorLoopSetup
 {
   const PartitionGraph* graph = nullptr;
@@ -38,7 +44,7 @@ struct ColorLoopSetup
   const TemplateTable* templates = nullptr;
   RefinementMethod method = RefinementMethod::Template;
   DelaunayParameters delaunay;
-  TetGenRunner runTetGen;                // Delaunay: how partitions call TetGen
+  PartitionTetGenRunner runTetGen;       // Delaunay: how partitions call TetGen
   bool refine = true;                    // false: a sweep of quality improvement only
   std::int64_t maximumNumberOfCells = 0; // refuse an iteration forecast to exceed it (0: no limit)
   bool improve = false;

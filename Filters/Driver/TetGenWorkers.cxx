@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <csignal>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <new>
@@ -139,14 +141,23 @@ bool receiveMesh(int socket, tetgenio& io)
   return receiveArray(socket, io.trifacemarkerlist, count);
 }
 
+// A request starts with what the worker is to do with it.
+enum RequestKind : std::int32_t
+{
+  RunTetGen = 1,
+  DieAfterReading = 2 // the test hook: die as an abort inside TetGen would
+};
+
 // The worker's life: read a request, run TetGen, answer; leave on end of input.
 [[noreturn]] void serveRequests(int socket)
 {
   for (;;)
   {
+    std::int32_t kind = 0;
     char* switches = nullptr;
     std::int64_t length = 0;
-    if (!receiveArray(socket, switches, length) || length == 0)
+    if (!receiveAll(socket, &kind, sizeof(kind)) || !receiveArray(socket, switches, length) ||
+      length == 0)
     {
       _exit(0);
     }
@@ -156,6 +167,10 @@ bool receiveMesh(int socket, tetgenio& io)
     if (!received)
     {
       _exit(1);
+    }
+    if (kind == DieAfterReading)
+    {
+      ::raise(SIGKILL);
     }
     try
     {
@@ -195,10 +210,32 @@ std::size_t workerCount(int requested)
   return std::min(static_cast<std::size_t>(std::max(requested, 1)), cores);
 }
 
+// The partition ids listed in the test hook's variable ("3,17"), sorted; what is not a
+// non-negative number is ignored.
+std::vector<int> partitionsToKill()
+{
+  std::vector<int> partitions;
+  const char* text = std::getenv(TetGenWorkerPool::KillPartitionsVariable);
+  while (text && *text)
+  {
+    char* end = nullptr;
+    const long value = std::strtol(text, &end, 10);
+    if (end != text && value >= 0 && value <= INT_MAX)
+    {
+      partitions.push_back(static_cast<int>(value));
+    }
+    text = end != text ? end : text + 1;
+    text += *text == ',' ? 1 : 0;
+  }
+  std::sort(partitions.begin(), partitions.end());
+  return partitions;
+}
+
 } // namespace
 
 TetGenWorkerPool::TetGenWorkerPool(int workers)
   : Workers(workerCount(workers))
+  , KillPartitions(partitionsToKill())
 {
   for (Worker& worker : this->Workers)
   {
@@ -283,7 +320,7 @@ void TetGenWorkerPool::stop(Worker& worker, bool kill)
 }
 
 std::string TetGenWorkerPool::run(
-  int index, const tetgenio& in, const std::string& switches, tetgenio& out)
+  int index, const tetgenio& in, const std::string& switches, tetgenio& out, int partition)
 {
   Worker& worker =
     this->Workers[static_cast<std::size_t>(std::max(index, 0)) % this->Workers.size()];
@@ -298,8 +335,15 @@ std::string TetGenWorkerPool::run(
   limit.tv_sec = static_cast<time_t>(30.0 + 0.002 * in.numberoftetrahedra);
   limit.tv_usec = 0;
   ::setsockopt(worker.socket, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof(limit));
+  const std::int32_t kind =
+    std::binary_search(this->KillPartitions.begin(), this->KillPartitions.end(), partition)
+    ? DieAfterReading
+    : RunTetGen;
   std::int32_t ok = 0;
-  const bool exchanged =
+  // A receive that fails at end of input leaves errno as it was: clear it, so that a stale
+  // EAGAIN from an earlier call on this thread does not pass a dead worker off as a timeout.
+  errno = 0;
+  const bool exchanged = sendAll(worker.socket, &kind, sizeof(kind)) &&
     sendArray(worker.socket, switches.c_str(), static_cast<std::int64_t>(switches.size() + 1)) &&
     sendMesh(worker.socket, in, true) && receiveAll(worker.socket, &ok, sizeof(ok));
   if (exchanged && ok)

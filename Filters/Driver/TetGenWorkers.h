@@ -31,8 +31,16 @@ public:
 
   // Runs TetGen with `switches` on `in` in worker `worker` modulo the number of workers (callers
   // that share a worker take turns) and fills `out`. Returns an empty string on success, else
-  // why it failed.
-  std::string run(int worker, const tetgenio& in, const std::string& switches, tetgenio& out);
+  // why it failed. `partition` names the partition the call refines (-1: none), for the test
+  // hook below.
+  std::string run(
+    int worker, const tetgenio& in, const std::string& switches, tetgenio& out, int partition = -1);
+
+  // Test hook: the environment variable CGMESH_TEST_KILL_TETGEN_PARTITIONS, a comma-separated
+  // list of partition ids, read once when the pool starts. A worker that receives a call for one
+  // of them kills itself with SIGKILL once it has read the request, as an abort inside TetGen
+  // would end it; the host sees a dead worker, the call fails and the worker is replaced.
+  static constexpr const char* KillPartitionsVariable = "CGMESH_TEST_KILL_TETGEN_PARTITIONS";
 
 private:
   struct Worker
@@ -46,6 +54,7 @@ private:
 
   std::vector<Worker> Workers;
   std::mutex Forking; // a new worker must close every other worker's socket it inherits
+  std::vector<int> KillPartitions; // sorted; see KillPartitionsVariable
 };
 
 } // namespace cgmesh

@@ -464,6 +464,65 @@ void test_duplicatedPoints()
   }
 }
 
+// Two boxes meshed independently ([0,1]^3 with 2 cells per side, [1,2]x[0,1]^2 with 4): their
+// x = 1 faces share nine grid points but no face, so the boxes are kept apart, with a warning
+// that counts the coincident points and names the first, and each is refined on its own.
+void test_touchingPartsWithIndependentMeshes()
+{
+  auto lines = [](double from, double to, int cells)
+  {
+    std::vector<double> values;
+    for (int i = 0; i <= cells; ++i)
+      values.push_back(i == cells ? to : from + (to - from) * i / cells);
+    return values;
+  };
+  cgmesh::TetMesh coarse, fine;
+  CGMESH_CHECK(
+    cgmesh::generateKuhnGrid({ lines(0, 1, 2), lines(0, 1, 2), lines(0, 1, 2) }, coarse).ok(),
+    "coarse box");
+  CGMESH_CHECK(
+    cgmesh::generateKuhnGrid({ lines(1, 2, 4), lines(0, 1, 4), lines(0, 1, 4) }, fine).ok(),
+    "fine box");
+  cgmesh::TetMesh mesh = coarse;
+  const cgmesh::PointId offset = mesh.numberOfPoints();
+  mesh.coordinates.insert(mesh.coordinates.end(), fine.coordinates.begin(), fine.coordinates.end());
+  for (cgmesh::Tet tet : fine.tets)
+  {
+    for (cgmesh::PointId& p : tet)
+      p += offset;
+    mesh.tets.push_back(tet);
+  }
+  vtkSmartPointer<vtkUnstructuredGrid> input = toGrid(mesh);
+  for (bool delaunay : { false, true })
+  {
+    FilterRun run(input, delaunay ? "touching boxes, Delaunay" : "touching boxes, Template");
+    if (delaunay)
+    {
+      run.Filter->SetMethodToDelaunay();
+      run.Filter->SetVolumeFactor(0.1);
+    }
+    run.update();
+    CGMESH_CHECK(run.UpdateResult == 1 && run.Messages->Errors == 0,
+      run.CaseName << ": the run failed: " << run.Messages->Text);
+    CGMESH_CHECK(run.said("kept 9 coincident points apart (the first is point 27 at (1, 0, 0))"),
+      run.CaseName << ": no warning about the points kept apart: " << run.Messages->Text);
+    CGMESH_CHECK(!run.said("merged") && !run.said("Delaunay refinement failed"),
+      run.CaseName << ": unexpected warnings: " << run.Messages->Text);
+    const cgmesh::MeshReport report = cgmesh_test::inspectGrid(run.output(), std::string());
+    CGMESH_CHECK(report.numberOfTets > 4 * static_cast<cgmesh::CellId>(mesh.tets.size()),
+      run.CaseName << ": hardly refined, " << report.numberOfTets << " tets");
+    CGMESH_CHECK(report.overSharedFaces == 0 && report.misorientedFacePairs == 0 &&
+        report.invertedTets == 0 && report.degenerateTets == 0 && report.unusedPoints == 0,
+      run.CaseName << ": " << report.describeProblems());
+    CGMESH_CHECK(
+      std::abs(report.volume - 2.0) <= 1e-12, run.CaseName << ": volume " << report.volume);
+    // Both sides of the contact stay boundary: 6 + 6.
+    CGMESH_CHECK(std::abs(report.boundaryArea - 12.0) <= 1e-12,
+      run.CaseName << ": boundary area " << report.boundaryArea);
+    cgmesh_test::checkLinearField(run.output());
+  }
+}
+
 //------------------------------------------------------------------------------
 // Region arrays
 
@@ -741,6 +800,7 @@ int main()
   test_zeroVolumeTets();
   test_invertedTets();
   test_duplicatedPoints();
+  test_touchingPartsWithIndependentMeshes();
   test_regionArrays();
   test_badRegionArrays();
   test_extremeScales();

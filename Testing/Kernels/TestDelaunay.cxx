@@ -1,11 +1,12 @@
 // Delaunay refinement through adaptMesh(): conformity, conserved volumes and material interfaces,
 // identical output for any thread count and for serialised TetGen calls, the volume bound inside
-// partitions, and the template fallback when TetGen fails.
+// partitions, and the template fallback when TetGen fails or its worker process dies.
 #include "AdaptationDriver.h"
 #include "Core/Geometry.h"
 #include "CubeGenerator.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
+#include "TetGenWorkers.h"
 #include "Validation/MeshValidation.h"
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <stdlib.h>
 
 using namespace cgmesh;
 
@@ -261,6 +263,33 @@ void test_failed_partitions_fall_back_to_templates()
   CHECK(cgmesh_test::identicalResults(result, run(input, options)));
 }
 
+// Worker processes killed on chosen partitions (the pool's test hook): the call and its retry
+// die, the partitions fall back exactly as after a TetGen error, and the replaced workers refine
+// every other partition, so the result equals that of simulated failures on the same partitions.
+void test_worker_deaths_fall_back_like_failures()
+{
+  const TetMesh input = threeRegionCube(8);
+  AdaptationOptions simulated = delaunayOptions(2, 1);
+  simulated.simulateTetGenFailureIn = { 3, 17, 40 };
+  const AdaptationResult reference = run(input, simulated);
+  CHECK(setenv(TetGenWorkerPool::KillPartitionsVariable, "3,17,40", 1) == 0);
+  for (int threads : { 2, 4 })
+  {
+    const AdaptationResult result = run(input, delaunayOptions(threads, 1));
+    CHECK(cgmesh_test::identicalResults(reference, result));
+    CHECK((std::multiset<int>(result.summary.fallbackPartitions.begin(),
+             result.summary.fallbackPartitions.end()) == std::multiset<int>{ 3, 17, 40 }));
+    // The simulated failures never call TetGen; each death is retried once, and dies again.
+    CHECK_EQUAL(result.summary.tetgenRetries, reference.summary.tetgenRetries + 3);
+    CHECK_EQUAL(result.summary.tetgenPoints, reference.summary.tetgenPoints);
+    for (const AdaptationWarning& warning : result.summary.warnings)
+    {
+      CHECK(warning.text.find("the TetGen process stopped unexpectedly") != std::string::npos);
+    }
+  }
+  CHECK(unsetenv(TetGenWorkerPool::KillPartitionsVariable) == 0);
+}
+
 void test_bad_delaunay_options_are_refused()
 {
   const TetMesh input = threeRegionCube(2);
@@ -281,6 +310,7 @@ int main()
   test_concurrent_tetgen_matches_serialised_calls();
   test_volume_bound_inside_partitions();
   test_failed_partitions_fall_back_to_templates();
+  test_worker_deaths_fall_back_like_failures();
   test_bad_delaunay_options_are_refused();
   return cgmesh_test::finish("TestDelaunay");
 }

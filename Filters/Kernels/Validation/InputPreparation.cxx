@@ -1,10 +1,10 @@
 #include "Validation/InputPreparation.h"
 
 #include "Core/Geometry.h"
+#include "Validation/ContactGluing.h"
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 namespace cgmesh
 {
@@ -73,36 +73,6 @@ Status orientTets(TetMesh& mesh, InputRepairs& repairs)
   return Status::success();
 }
 
-// Points with bit-identical coordinates become one (the lowest id).
-void mergeCoincidentPoints(TetMesh& mesh, InputRepairs& repairs)
-{
-  std::vector<PointId> order(mesh.numberOfPoints());
-  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
-  {
-    order[p] = p;
-  }
-  auto key = [&mesh](PointId p)
-  {
-    return std::make_tuple(mesh.point(p)[0], mesh.point(p)[1], mesh.point(p)[2], p);
-  };
-  std::sort(order.begin(), order.end(), [&](PointId a, PointId b) { return key(a) < key(b); });
-  std::vector<PointId> representative(mesh.numberOfPoints());
-  for (std::size_t i = 0; i < order.size(); ++i)
-  {
-    const bool sameAsPrevious =
-      i > 0 && std::equal(mesh.point(order[i]), mesh.point(order[i]) + 3, mesh.point(order[i - 1]));
-    representative[order[i]] = sameAsPrevious ? representative[order[i - 1]] : order[i];
-    repairs.mergedPoints += sameAsPrevious;
-  }
-  for (Tet& tet : mesh.tets)
-  {
-    for (PointId& p : tet)
-    {
-      p = representative[p];
-    }
-  }
-}
-
 } // namespace
 
 Status prepareInput(const TetMesh& input, TetMesh& prepared, InputRepairs& repairs)
@@ -114,7 +84,10 @@ Status prepareInput(const TetMesh& input, TetMesh& prepared, InputRepairs& repai
   {
     return status;
   }
-  mergeCoincidentPoints(prepared, repairs);
+  const ContactGluing gluing = glueMatchingFaces(prepared);
+  repairs.gluedPoints = gluing.gluedPoints;
+  repairs.keptApartPoints = gluing.keptApartPoints;
+  repairs.firstKeptApartPoint = gluing.firstKeptApart;
   return orientTets(prepared, repairs);
 }
 

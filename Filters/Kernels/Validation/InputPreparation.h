@@ -4,9 +4,10 @@
 //   - non-finite coordinates and zero-volume tets are refused;
 //   - inverted tets are reoriented (Netgen's meshes arrive fully inverted in VTK's convention,
 //     DOLFIN's about half), so the output is consistently oriented;
-//   - points with identical coordinates are merged, so that parts which touch without sharing
-//     nodes become conforming. Unused points are dropped later, at the merge.
-// Point ids keep their meaning (a merged point refers to the first of its copies), so point data
+//   - parts that touch without sharing nodes are glued where their faces match (see
+//     ContactGluing.h) and kept apart elsewhere. Glued copies become unused and are dropped
+//     later, at the merge.
+// Point ids keep their meaning (a glued point refers to the first of its copies), so point data
 // still comes from the input by id.
 #ifndef cgmesh_InputPreparation_h
 #define cgmesh_InputPreparation_h
@@ -23,7 +24,9 @@ namespace cgmesh
 struct InputRepairs
 {
   CellId reorientedTets = 0;
-  PointId mergedPoints = 0;
+  PointId gluedPoints = 0;          // copies merged into a corner of a matching face
+  PointId keptApartPoints = 0;      // points left distinct from a coincident one
+  PointId firstKeptApartPoint = -1; // the lowest of those, or -1
 };
 
 // Fills `prepared` from `input` (left untouched) or fails with a one-line reason.

@@ -1,0 +1,403 @@
+#include "Validation/ContactGluing.h"
+
+#include "Core/FaceKey.h"
+#include "Core/Geometry.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace cgmesh
+{
+namespace
+{
+
+std::vector<PointId> usedPoints(const TetMesh& mesh)
+{
+  std::vector<char> used(mesh.numberOfPoints(), 0);
+  for (const Tet& tet : mesh.tets)
+  {
+    for (PointId p : tet)
+    {
+      used[p] = 1;
+    }
+  }
+  std::vector<PointId> ids;
+  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  {
+    if (used[p])
+    {
+      ids.push_back(p);
+    }
+  }
+  return ids;
+}
+
+// Pairs (p, q), p < q, of used points at most `tolerance` apart, in ascending order. Points are
+// bucketed in a grid whose cells are 100 tolerances wide: small against any edge worth refining,
+// so cells hold a point or two, and wide enough that a point must be looked for in a neighbouring
+// cell only along axes where it lies within a tolerance of its cell's side (on 1 to 8 cells, not
+// always 27). Cells are found by binary search in the sorted buckets, so no hashing order reaches
+// the result.
+std::vector<std::pair<PointId, PointId>> coincidentPairs(
+  const TetMesh& mesh, const std::vector<PointId>& used, const double low[3], double tolerance)
+{
+  using Cell = std::array<std::int64_t, 3>;
+  const double cellSize = 100 * tolerance;
+  std::vector<std::pair<Cell, PointId>> buckets;
+  buckets.reserve(used.size());
+  for (PointId p : used)
+  {
+    Cell cell;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      // At most 1 / (100 RelativeContactTolerance) cells per axis: no overflow.
+      cell[axis] =
+        static_cast<std::int64_t>(std::floor((mesh.point(p)[axis] - low[axis]) / cellSize));
+    }
+    buckets.emplace_back(cell, p);
+  }
+  std::sort(buckets.begin(), buckets.end());
+  const double squaredTolerance = tolerance * tolerance;
+  const double margin = 2.0 / 100; // a tolerance in cell widths, doubled against rounding
+  std::vector<std::pair<PointId, PointId>> pairs;
+  for (const auto& [cell, p] : buckets)
+  {
+    std::array<int, 3> from, to;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double within = (mesh.point(p)[axis] - low[axis]) / cellSize - cell[axis];
+      from[axis] = within < margin ? -1 : 0;
+      to[axis] = within > 1 - margin ? 1 : 0;
+    }
+    for (int dx = from[0]; dx <= to[0]; ++dx)
+    {
+      for (int dy = from[1]; dy <= to[1]; ++dy)
+      {
+        for (int dz = from[2]; dz <= to[2]; ++dz)
+        {
+          const Cell neighbour = { cell[0] + dx, cell[1] + dy, cell[2] + dz };
+          auto at =
+            std::lower_bound(buckets.begin(), buckets.end(), std::make_pair(neighbour, PointId(0)));
+          for (; at != buckets.end() && at->first == neighbour; ++at)
+          {
+            const PointId q = at->second;
+            if (q != p && squaredDistance(mesh.point(p), mesh.point(q)) <= squaredTolerance)
+            {
+              pairs.emplace_back(std::min(p, q), std::max(p, q));
+            }
+          }
+        }
+      }
+    }
+  }
+  // Each pair was found from both ends (the neighbourhood test is not exactly symmetric).
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+// Compressed lists: the entries of key k are values[offsets[k] .. offsets[k + 1]).
+struct Lists
+{
+  std::vector<std::size_t> offsets;
+  std::vector<std::int64_t> values;
+
+  Lists(std::size_t keys, const std::vector<std::pair<std::int64_t, std::int64_t>>& entries)
+    : offsets(keys + 1, 0)
+  {
+    for (const auto& entry : entries)
+    {
+      ++this->offsets[entry.first + 1];
+    }
+    for (std::size_t k = 0; k < keys; ++k)
+    {
+      this->offsets[k + 1] += this->offsets[k];
+    }
+    this->values.resize(entries.size());
+    std::vector<std::size_t> next(this->offsets.begin(), this->offsets.end() - 1);
+    for (const auto& entry : entries) // in entry order: sorted entries give sorted lists
+    {
+      this->values[next[entry.first]++] = entry.second;
+    }
+  }
+  const std::int64_t* begin(std::int64_t key) const { return this->values.data() + offsets[key]; }
+  const std::int64_t* end(std::int64_t key) const { return this->values.data() + offsets[key + 1]; }
+  bool empty(std::int64_t key) const { return offsets[key] == offsets[key + 1]; }
+};
+
+struct BoundaryFace
+{
+  Face corners; // ascending ids
+  CellId tet;
+};
+
+// Boundary faces (held by one tet only) with a corner that coincides with another point: only
+// those can have a copy. A face is held only by tets holding all its corners, so counting the
+// faces of the tets with such a corner suffices, which keeps the face table to the contacts.
+std::vector<BoundaryFace> contactFaceCandidates(const TetMesh& mesh, const Lists& partners)
+{
+  std::vector<PointId> corners;
+  std::vector<CellId> tetOf;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    const Tet& tet = mesh.tets[t];
+    if (std::any_of(tet.begin(), tet.end(), [&](PointId p) { return !partners.empty(p); }))
+    {
+      corners.insert(corners.end(), tet.begin(), tet.end());
+      tetOf.push_back(t);
+    }
+  }
+  std::vector<BoundaryFace> faces;
+  forEachDistinctFace(corners.data(), tetOf.size(),
+    [&](const Face& face, std::size_t first, std::size_t, std::size_t count)
+    {
+      if (count == 1 &&
+        std::any_of(face.begin(), face.end(), [&](PointId p) { return !partners.empty(p); }))
+      {
+        faces.push_back({ face, tetOf[first] });
+      }
+    });
+  std::sort(faces.begin(), faces.end(),
+    [](const BoundaryFace& a, const BoundaryFace& b) { return a.corners < b.corners; });
+  return faces;
+}
+
+class FaceMatcher
+{
+public:
+  FaceMatcher(const TetMesh& mesh, double tolerance)
+    : Mesh(mesh)
+    , SquaredTolerance(tolerance * tolerance)
+  {
+  }
+
+  // The corner of `g` that each corner of `f` coincides with (the same point or one within the
+  // tolerance), when both faces are copies of one face seen from opposite sides.
+  bool match(const BoundaryFace& f, const BoundaryFace& g, std::array<PointId, 3>& partner) const
+  {
+    if (f.tet == g.tet || !this->wellSeparated(f.corners) || !this->wellSeparated(g.corners))
+    {
+      return false;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      int found = 0;
+      for (PointId q : g.corners)
+      {
+        if (this->coincide(f.corners[k], q))
+        {
+          partner[k] = q;
+          ++found;
+        }
+      }
+      if (found != 1)
+      {
+        return false;
+      }
+    }
+    // Copies of one face bound tets on its two sides; two parts lying on top of each other
+    // are not glued.
+    std::array<double, 3> nf = this->outwardNormal(f), ng = this->outwardNormal(g);
+    return nf[0] * ng[0] + nf[1] * ng[1] + nf[2] * ng[2] < 0;
+  }
+
+private:
+  bool coincide(PointId p, PointId q) const
+  {
+    return p == q ||
+      squaredDistance(this->Mesh.point(p), this->Mesh.point(q)) <= this->SquaredTolerance;
+  }
+
+  // Corners more than twice the tolerance apart: the corner correspondence is unambiguous and
+  // merging cannot fold a tet.
+  bool wellSeparated(const Face& face) const
+  {
+    const double limit = 4 * this->SquaredTolerance;
+    return squaredDistance(this->Mesh.point(face[0]), this->Mesh.point(face[1])) > limit &&
+      squaredDistance(this->Mesh.point(face[1]), this->Mesh.point(face[2])) > limit &&
+      squaredDistance(this->Mesh.point(face[0]), this->Mesh.point(face[2])) > limit;
+  }
+
+  // The face's normal pointing away from its tet's fourth corner (whatever the tet's orientation).
+  std::array<double, 3> outwardNormal(const BoundaryFace& face) const
+  {
+    const double* a = this->Mesh.point(face.corners[0]);
+    const double* b = this->Mesh.point(face.corners[1]);
+    const double* c = this->Mesh.point(face.corners[2]);
+    PointId opposite = -1;
+    for (PointId p : this->Mesh.tets[face.tet])
+    {
+      opposite =
+        std::find(face.corners.begin(), face.corners.end(), p) == face.corners.end() ? p : opposite;
+    }
+    const double* o = this->Mesh.point(opposite);
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    std::array<double, 3> n = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+      u[0] * v[1] - u[1] * v[0] };
+    const double side = n[0] * (o[0] - a[0]) + n[1] * (o[1] - a[1]) + n[2] * (o[2] - a[2]);
+    if (side > 0)
+    {
+      n = { -n[0], -n[1], -n[2] };
+    }
+    return n;
+  }
+
+  const TetMesh& Mesh;
+  double SquaredTolerance;
+};
+
+// Union-find whose root is always the lowest id of its set, so the representatives do not depend
+// on the order of the unions.
+class LowestIdSets
+{
+public:
+  explicit LowestIdSets(PointId size)
+    : Parent(size)
+  {
+    for (PointId p = 0; p < size; ++p)
+    {
+      this->Parent[p] = p;
+    }
+  }
+  PointId find(PointId p)
+  {
+    while (this->Parent[p] != p)
+    {
+      this->Parent[p] = this->Parent[this->Parent[p]];
+      p = this->Parent[p];
+    }
+    return p;
+  }
+  void join(PointId a, PointId b)
+  {
+    a = this->find(a);
+    b = this->find(b);
+    this->Parent[std::max(a, b)] = std::min(a, b);
+  }
+
+private:
+  std::vector<PointId> Parent;
+};
+
+// Joins the corners of every pair of matching boundary faces.
+void joinMatchingFaces(
+  const TetMesh& mesh, const Lists& partners, double tolerance, LowestIdSets& sets)
+{
+  const std::vector<BoundaryFace> faces = contactFaceCandidates(mesh, partners);
+  std::vector<std::pair<std::int64_t, std::int64_t>> incidence; // (point, face), sorted
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    for (PointId p : faces[f].corners)
+    {
+      incidence.emplace_back(p, static_cast<std::int64_t>(f));
+    }
+  }
+  std::sort(incidence.begin(), incidence.end());
+  const Lists facesAt(static_cast<std::size_t>(mesh.numberOfPoints()), incidence);
+
+  const FaceMatcher matcher(mesh, tolerance);
+  std::vector<std::int64_t> candidates;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    // A copy holds the first corner itself or a point coinciding with it.
+    const PointId first = faces[f].corners[0];
+    candidates.assign(facesAt.begin(first), facesAt.end(first));
+    for (const std::int64_t* q = partners.begin(first); q != partners.end(first); ++q)
+    {
+      candidates.insert(candidates.end(), facesAt.begin(*q), facesAt.end(*q));
+    }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    for (std::int64_t g : candidates)
+    {
+      std::array<PointId, 3> partner;
+      if (g > static_cast<std::int64_t>(f) && matcher.match(faces[f], faces[g], partner))
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          sets.join(faces[f].corners[k], partner[k]);
+        }
+      }
+    }
+  }
+}
+
+} // namespace
+
+ContactGluing glueMatchingFaces(TetMesh& mesh)
+{
+  ContactGluing outcome;
+  const std::vector<PointId> used = usedPoints(mesh);
+  if (used.empty())
+  {
+    return outcome;
+  }
+  double low[3], high[3];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    low[axis] = high[axis] = mesh.point(used[0])[axis];
+  }
+  for (PointId p : used)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      low[axis] = std::min(low[axis], mesh.point(p)[axis]);
+      high[axis] = std::max(high[axis], mesh.point(p)[axis]);
+    }
+  }
+  outcome.tolerance = RelativeContactTolerance * std::sqrt(squaredDistance(low, high));
+  if (!(outcome.tolerance > 0))
+  {
+    return outcome; // every used point in one place: the tets are degenerate and refused later
+  }
+
+  const auto pairs = coincidentPairs(mesh, used, low, outcome.tolerance);
+  std::vector<std::pair<std::int64_t, std::int64_t>> symmetric;
+  for (const auto& [p, q] : pairs)
+  {
+    symmetric.emplace_back(p, q);
+    symmetric.emplace_back(q, p);
+  }
+  std::sort(symmetric.begin(), symmetric.end());
+  const Lists partners(static_cast<std::size_t>(mesh.numberOfPoints()), symmetric);
+
+  LowestIdSets sets(mesh.numberOfPoints());
+  if (!pairs.empty())
+  {
+    joinMatchingFaces(mesh, partners, outcome.tolerance, sets);
+  }
+  for (PointId p : used)
+  {
+    outcome.gluedPoints += sets.find(p) != p ? 1 : 0;
+  }
+  // Coincident points that stay distinct: of each such pair of representatives, the higher one
+  // (what merging every coincident point would have dropped).
+  std::vector<PointId> keptApart;
+  for (const auto& [p, q] : pairs)
+  {
+    const PointId a = sets.find(p), b = sets.find(q);
+    if (a != b)
+    {
+      keptApart.push_back(std::max(a, b));
+    }
+  }
+  std::sort(keptApart.begin(), keptApart.end());
+  keptApart.erase(std::unique(keptApart.begin(), keptApart.end()), keptApart.end());
+  outcome.keptApartPoints = static_cast<PointId>(keptApart.size());
+  outcome.firstKeptApart = keptApart.empty() ? -1 : keptApart.front();
+
+  for (Tet& tet : mesh.tets)
+  {
+    for (PointId& p : tet)
+    {
+      p = sets.find(p);
+    }
+  }
+  return outcome;
+}
+
+} // namespace cgmesh
