@@ -34,6 +34,7 @@ def render(options, image_file):
     refined.NumberOfIterations = 1
     refined.Method = "Template"
     refined.EdgeLengthFactor = 0.5
+    refined.Partitioner = "METIS"  # compact parts: Hilbert runs, cut along grid planes, speckle a crinkle clip
     refined.ColoringAlgorithm = "Greedy-LU"
     refined.NumberOfThreads = 1
     if refined.GetProperty("ImproveQuality") is not None:

@@ -11,12 +11,15 @@ def start_xvfb(geometry="1280x1024x24", attempts=3):
     """Starts Xvfb on a display number it picks itself (-displayfd: no race between tests that
     start servers at the same time) and returns (process, ":N") once its socket accepts
     connections. A server that exits or never opens its socket (seen on fresh machines while an
-    outer xvfb-run starts its own) is replaced, up to `attempts` times."""
+    outer xvfb-run starts its own) is replaced, up to `attempts` times. -noreset: an X server
+    resets when its last client leaves, and a client that connects during the reset is refused;
+    the readiness probe below is such a last client, and pvbatch connecting right after it failed
+    with "bad X server connection"."""
     last_error = "Xvfb did not start"
     for _ in range(attempts):
         read_end, write_end = os.pipe()
         server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", geometry,
-                                   "-nolisten", "tcp"], pass_fds=(write_end,),
+                                   "-nolisten", "tcp", "-noreset"], pass_fds=(write_end,),
                                   stderr=subprocess.DEVNULL)
         os.close(write_end)
         with os.fdopen(read_end) as reader:
