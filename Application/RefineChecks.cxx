@@ -97,7 +97,10 @@ Status checkSizeBeforeRefining(vtkUnstructuredGrid* input, const AdaptationOptio
   const double limit = static_cast<double>(options.maximumNumberOfCells);
   const int iterations = options.numberOfIterations;
   // With one iteration the filter's forecast is exact and comes before any large allocation.
-  if (options.method != RefinementMethod::Template || limit <= 0 || iterations < 2)
+  // A size field has no single threshold to bound with: the filter's forecast of every pass
+  // guards it.
+  if (options.method != RefinementMethod::Template || limit <= 0 || iterations < 2 ||
+    !options.sizeArrayName.empty())
     return Status::success();
   const double cells = static_cast<double>(input->GetNumberOfCells());
   if (cells * leastTetsAfterWholeSplits(std::min(iterations, MaximumCountedSplits)) <= limit)
@@ -140,6 +143,12 @@ std::string nothingRefinedWarning(
     text << "TetGen inserted no point under the volume bound " << statistics.volumeBound
          << " and the radius-edge bound " << options.radiusEdgeRatio
          << " (the largest input tet has volume " << largestVolume(mesh) << ")";
+    return text.str();
+  }
+  if (!options.sizeArrayName.empty())
+  {
+    text << "no edge is longer than sqrt(2) times the size field '" << options.sizeArrayName
+         << "' at its midpoint";
     return text.str();
   }
   const double longest = longestEdge(mesh);

@@ -234,6 +234,16 @@ void collectFilterStatistics(
   statistics.interfacePoints = summary.interfacePoints;
   statistics.numberOfThreads = summary.plan.threads;
   statistics.edgeLengthThreshold = summary.plan.edgeLengthThreshold;
+  statistics.iterationsRun = summary.iterationsRun;
+  statistics.refinementConverged = summary.refinementConverged;
+  if (summary.plan.sizeField)
+  {
+    statistics.sizeArray = filter->GetSizeArrayName() ? filter->GetSizeArrayName() : "";
+    statistics.sizeGradation = filter->GetSizeGradation();
+    statistics.edgesWithinSizeBounds = summary.edgeSizes.shareWithinBounds;
+    statistics.edgeSizeRatioHistogram.assign(
+      summary.edgeSizes.histogram.begin(), summary.edgeSizes.histogram.end());
+  }
   statistics.coloring = filter->GetColoringAlgorithmName();
   statistics.method = filter->GetMethodName();
   statistics.volumeBound = summary.plan.volumeBound;
@@ -282,10 +292,24 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
          << std::setw(24) << "color balance" << std::setprecision(4) << statistics.colorBalance
          << "\n"
          << std::setw(24) << "threads" << statistics.numberOfThreads << "\n"
-         << std::setw(24) << "iterations" << statistics.numberOfIterations << "\n"
-         << std::setw(24) << "method" << statistics.method << "\n"
-         << std::setw(24) << "edge length threshold" << std::setprecision(6)
-         << statistics.edgeLengthThreshold << "\n";
+         << std::setw(24) << "iterations" << statistics.iterationsRun << " of "
+         << statistics.numberOfIterations
+         << (statistics.refinementConverged ? " (converged: the last pass added no point)" : "")
+         << "\n"
+         << std::setw(24) << "method" << statistics.method << "\n";
+  if (statistics.sizeArray.empty())
+  {
+    stream << std::setw(24) << "edge length threshold" << std::setprecision(6)
+           << statistics.edgeLengthThreshold << "\n";
+  }
+  else
+  {
+    stream << std::setw(24) << "size field" << statistics.sizeArray << " (gradation "
+           << statistics.sizeGradation << ")\n"
+           << std::setw(24) << "edges within size" << std::setprecision(4)
+           << 100 * statistics.edgesWithinSizeBounds << "% in [h/sqrt2, sqrt2 h]; by length/h "
+           << joinValues(statistics.edgeSizeRatioHistogram, " ") << "\n";
+  }
   if (statistics.method == "delaunay")
   {
     stream << std::setw(24) << "volume bound" << statistics.volumeBound << "\n"
@@ -338,6 +362,18 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"colorBalance\": " << statistics.colorBalance << ",\n"
        << "  \"threads\": " << statistics.numberOfThreads << ",\n"
        << "  \"iterations\": " << statistics.numberOfIterations << ",\n"
+       << "  \"iterationsRun\": " << statistics.iterationsRun << ",\n"
+       << "  \"refinementConverged\": " << (statistics.refinementConverged ? "true" : "false")
+       << ",\n";
+  if (!statistics.sizeArray.empty())
+  {
+    file << "  \"sizeField\": {\"array\": " << jsonString(statistics.sizeArray)
+         << ", \"gradation\": " << statistics.sizeGradation
+         << ", \"edgesWithinBounds\": " << statistics.edgesWithinSizeBounds
+         << ", \"edgeSizeRatioHistogram\": [" << joinValues(statistics.edgeSizeRatioHistogram, ", ")
+         << "]},\n";
+  }
+  file << "  \"method\": " << jsonString(statistics.method) << ",\n"
        << "  \"method\": " << jsonString(statistics.method) << ",\n"
        << "  \"edgeLengthThreshold\": " << statistics.edgeLengthThreshold << ",\n"
        << "  \"volumeBound\": " << statistics.volumeBound << ",\n"

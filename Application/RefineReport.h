@@ -41,9 +41,15 @@ struct RefineStatistics
   std::int64_t interfacePoints = 0; // input points in tets of two or more partitions
   int numberOfThreads = 0;
   int numberOfIterations = 0;
-  double edgeLengthThreshold = 0;               // the (interface) edge length threshold
-  std::string method;                           // "template" or "delaunay"
-  double volumeBound = 0;                       // delaunay: the absolute volume bound applied
+  int iterationsRun = 0;
+  bool refinementConverged = false; // the last pass added no point
+  std::string sizeArray;            // the size field's array, empty for none
+  double sizeGradation = 0;
+  double edgesWithinSizeBounds = 0; // share of edges with length / h in [1/sqrt2, sqrt2]
+  std::vector<std::int64_t> edgeSizeRatioHistogram; // bins split at 1/2, 1/sqrt2, 1, sqrt2, 2
+  double edgeLengthThreshold = 0;                   // the (interface) edge length threshold
+  std::string method;                               // "template" or "delaunay"
+  double volumeBound = 0;                           // delaunay: the absolute volume bound applied
   std::int64_t delaunayFallbacks = 0;           // partition refinements that fell back to templates
   std::vector<std::int64_t> fallbackPartitions; // their partitions
   std::int64_t tetgenPoints = 0;                // Steiner points TetGen inserted

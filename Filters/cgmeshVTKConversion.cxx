@@ -8,12 +8,17 @@
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace cgmesh
 {
@@ -98,10 +103,85 @@ Status copyRegions(vtkUnstructuredGrid* grid, const std::string& regionArrayName
   return Status::success();
 }
 
+std::string arrayNames(vtkFieldData* data)
+{
+  std::string names;
+  for (int i = 0; i < data->GetNumberOfArrays(); ++i)
+  {
+    const char* name = data->GetArrayName(i);
+    names += std::string(names.empty() ? "" : ", ") + (name ? name : "(unnamed)");
+  }
+  return names.empty() ? std::string("none") : names;
+}
+
+// A point array gives one size per point; a cell array is averaged over the cells around each
+// point (a point no cell uses keeps 0, which the kernel's check ignores: unused points are
+// removed).
+Status copySizes(vtkUnstructuredGrid* grid, const std::string& sizeArrayName, TetMesh& mesh)
+{
+  const std::string what = "size array '" + sizeArrayName + "'";
+  vtkAbstractArray* pointArray = grid->GetPointData()->GetAbstractArray(sizeArrayName.c_str());
+  vtkAbstractArray* abstractArray =
+    pointArray ? pointArray : grid->GetCellData()->GetAbstractArray(sizeArrayName.c_str());
+  if (!abstractArray)
+  {
+    return Status::failure(ErrorKind::InvalidOption,
+      what + " is neither a point nor a cell array of the input (point arrays: " +
+        arrayNames(grid->GetPointData()) + "; cell arrays: " + arrayNames(grid->GetCellData()) +
+        ")");
+  }
+  vtkDataArray* sizes = vtkDataArray::SafeDownCast(abstractArray);
+  if (!sizes)
+  {
+    return Status::failure(ErrorKind::InvalidInput, what + " is not numeric");
+  }
+  if (sizes->GetNumberOfComponents() != 1)
+  {
+    return Status::failure(ErrorKind::InvalidInput,
+      what + " has " + std::to_string(sizes->GetNumberOfComponents()) +
+        " components; a size field has one (a target edge length)");
+  }
+  const char* entity = pointArray ? "point" : "cell";
+  for (vtkIdType id = 0; id < sizes->GetNumberOfTuples(); ++id)
+  {
+    const double h = sizes->GetComponent(id, 0);
+    if (!(h > 0) || !std::isfinite(h))
+    {
+      std::ostringstream message;
+      message << what << ": the value at " << entity << " " << id << " is " << h
+              << "; sizes must be positive and finite";
+      return Status::failure(ErrorKind::InvalidInput, message.str());
+    }
+  }
+  mesh.sizes.assign(static_cast<std::size_t>(mesh.numberOfPoints()), 0.0);
+  if (pointArray)
+  {
+    for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+    {
+      mesh.sizes[p] = sizes->GetComponent(p, 0);
+    }
+    return Status::success();
+  }
+  std::vector<int> cellsAround(mesh.sizes.size(), 0);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    for (PointId p : mesh.tets[t])
+    {
+      mesh.sizes[p] += sizes->GetComponent(static_cast<vtkIdType>(t), 0);
+      ++cellsAround[p];
+    }
+  }
+  for (std::size_t p = 0; p < mesh.sizes.size(); ++p)
+  {
+    mesh.sizes[p] /= std::max(cellsAround[p], 1);
+  }
+  return Status::success();
+}
+
 } // namespace
 
-Status convertToTetMesh(
-  vtkUnstructuredGrid* grid, const std::string& regionArrayName, TetMesh& mesh)
+Status convertToTetMesh(vtkUnstructuredGrid* grid, const std::string& regionArrayName,
+  TetMesh& mesh, const std::string& sizeArrayName)
 {
   mesh = TetMesh();
   if (grid->GetNumberOfPoints() > 0)
@@ -118,7 +198,15 @@ Status convertToTetMesh(
   }
   if (!regionArrayName.empty())
   {
-    return copyRegions(grid, regionArrayName, mesh);
+    Status status = copyRegions(grid, regionArrayName, mesh);
+    if (!status.ok())
+    {
+      return status;
+    }
+  }
+  if (!sizeArrayName.empty())
+  {
+    return copySizes(grid, sizeArrayName, mesh);
   }
   return Status::success();
 }

@@ -21,9 +21,12 @@ CGMESHFILTERS_EXPORT vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid);
 
 // Copies points and tetrahedra of `grid` into `mesh`. When `regionArrayName` is not empty the named
 // cell array (any numeric type, first component, converted to int) becomes mesh.regions; a missing
-// or non-numeric array is a failure. The grid must hold only VTK_TETRA cells.
-CGMESHFILTERS_EXPORT Status convertToTetMesh(
-  vtkUnstructuredGrid* grid, const std::string& regionArrayName, TetMesh& mesh);
+// or non-numeric array is a failure. When `sizeArrayName` is not empty the named point array, or
+// else cell array averaged to the points, becomes mesh.sizes (one component, positive and finite
+// values, else a failure naming the first bad value). The grid must hold only VTK_TETRA cells.
+CGMESHFILTERS_EXPORT Status convertToTetMesh(vtkUnstructuredGrid* grid,
+  const std::string& regionArrayName, TetMesh& mesh,
+  const std::string& sizeArrayName = std::string());
 
 // Replaces the geometry of `grid` with `mesh` (double points, VTK_TETRA cells). When the mesh has
 // regions and `regionArrayName` is not empty, they are stored as an int cell array of that name.

@@ -223,6 +223,17 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "ColoringAlgorithmIndex", filter->GetColoringAlgorithm());
   // The partitioner used: Automatic resolved to METIS or Hilbert.
   addFieldValue(fieldData, "PartitionerIndex", static_cast<int>(result.plan.partitioner));
+  if (result.plan.sizeField)
+  {
+    addFieldValue(fieldData, "EdgesWithinSizeBounds", result.edgeSizes.shareWithinBounds);
+    vtkNew<vtkLongArray> histogram; // edges by length / h, bins split at 1/2, 1/sqrt2, 1, sqrt2, 2
+    histogram->SetName("EdgeSizeRatioHistogram");
+    for (const std::int64_t count : result.edgeSizes.histogram)
+    {
+      histogram->InsertNextValue(static_cast<long>(count));
+    }
+    fieldData->AddArray(histogram);
+  }
   if (filter->GetDiagnostics())
   {
     addTextDiagnostics(result, filter, fieldData);
@@ -322,6 +333,15 @@ void fillOutput(
       static_cast<vtkIdType>(cellId), result.nearFormerInterface[cellId] ? 1 : 0);
   }
   output->GetCellData()->AddArray(nearFormerInterface);
+  if (!result.edgeLengthRatio.empty())
+  {
+    vtkNew<vtkDoubleArray> edgeLengthRatio;
+    edgeLengthRatio->SetName("EdgeLengthRatio");
+    edgeLengthRatio->SetNumberOfValues(static_cast<vtkIdType>(result.edgeLengthRatio.size()));
+    std::copy(
+      result.edgeLengthRatio.begin(), result.edgeLengthRatio.end(), edgeLengthRatio->GetPointer(0));
+    output->GetCellData()->AddArray(edgeLengthRatio);
+  }
 }
 
 } // namespace
@@ -473,6 +493,18 @@ std::string vtkCoarseGrainedMeshAdaptation::ResolveRegionArrayName(vtkUnstructur
 }
 
 //------------------------------------------------------------------------------
+std::string vtkCoarseGrainedMeshAdaptation::ResolveSizeArrayName(vtkUnstructuredGrid* input) const
+{
+  const std::string& name = this->Internals->Parameters.sizeArrayName;
+  if (name == "None" && !input->GetPointData()->GetAbstractArray("None") &&
+    !input->GetCellData()->GetAbstractArray("None"))
+  {
+    return std::string();
+  }
+  return name;
+}
+
+//------------------------------------------------------------------------------
 bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
 {
   const vtkIdType nonTetrahedra = cgmesh::countNonTetrahedra(input);
@@ -512,8 +544,8 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   }
 
   cgmesh::TetMesh inputMesh;
-  cgmesh::Status status =
-    cgmesh::convertToTetMesh(input, this->ResolveRegionArrayName(input), inputMesh);
+  cgmesh::Status status = cgmesh::convertToTetMesh(
+    input, this->ResolveRegionArrayName(input), inputMesh, this->ResolveSizeArrayName(input));
   if (!status.ok())
   {
     vtkErrorMacro(<< "Cannot read the input: " << status.message() << ".");

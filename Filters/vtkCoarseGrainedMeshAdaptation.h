@@ -113,7 +113,10 @@ public:
    * PartitionByRegion (off) and PartitionsPerRegion (1): cut along the regions instead of METIS on
    * the whole mesh (needs RegionArrayName).
    * ColoringAlgorithm (GREEDY_LEAST_USED), Method (TEMPLATE), NumberOfIterations (1).
-   * Template: MaximumEdgeLength (0: unused) or EdgeLengthFactor (0.5).
+   * Template: MaximumEdgeLength (0: unused) or EdgeLengthFactor (0.5); or a size field:
+   * SizeArrayName (a point or cell array of target edge lengths; none by default) and
+   * SizeGradation (1.3), with the cell array EdgeLengthRatio and the field data
+   * EdgesWithinSizeBounds and EdgeSizeRatioHistogram in the output.
    * Delaunay: MaximumVolume (0: unused) or VolumeFactor (0.1), RadiusEdgeRatio (2, at least 1).
    * ImproveQuality (on) and NumberOfImprovementPasses (2, in [0, 20]).
    * NumberOfThreads (0: all cores; the output does not depend on it).
@@ -130,6 +133,8 @@ public:
   cgmeshParameterMacro(NumberOfIterations, int);
   cgmeshParameterMacro(MaximumEdgeLength, double);
   cgmeshParameterMacro(EdgeLengthFactor, double);
+  cgmeshTextParameterMacro(SizeArrayName);
+  cgmeshParameterMacro(SizeGradation, double);
   cgmeshParameterMacro(MaximumVolume, double);
   cgmeshParameterMacro(VolumeFactor, double);
   cgmeshParameterMacro(RadiusEdgeRatio, double);
@@ -291,6 +296,8 @@ protected:
 
   // The region array name to use: empty when unset, empty or ParaView's "None" entry.
   std::string ResolveRegionArrayName(vtkUnstructuredGrid* input) const;
+  // The size array's name, empty for none (or ParaView's "None" entry).
+  std::string ResolveSizeArrayName(vtkUnstructuredGrid* input) const;
   // Reports an error and returns false unless every input cell is a linear tetrahedron and
   // PartitionByRegion has a region array to cut along.
   bool CheckInput(vtkUnstructuredGrid* input);

@@ -7,6 +7,7 @@
 #include "ParallelFor.h"
 #include "Partitioning/HilbertPartitioner.h"
 #include "Partitioning/MeshPartitioner.h"
+#include "Refinement/SizeField.h"
 #include "TetGenWorkers.h"
 #include "Validation/InputPreparation.h"
 
@@ -51,6 +52,7 @@ void distributeTets(
     }
   }
   state.coordinates = input.coordinates;
+  state.sizes = input.sizes;
   state.inputPointCount = input.numberOfPoints();
 }
 
@@ -253,13 +255,18 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   MergedMesh merged;
   status = mergePartitions(state.partitions, state.coordinates, state.inputPointCount,
     state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints },
-    options.pointProvenance);
+    options.pointProvenance, state.sizes.empty() ? nullptr : &state.sizes);
   if (!status.ok())
   {
     return status;
   }
   state = AdaptationState(); // the partitions are in `merged` now
   adoptMergedMesh(merged, partitionOfCell, result);
+  if (result.mesh.hasSizes())
+  {
+    result.edgeLengthRatio = edgeLengthRatios(result.mesh);
+    summary.edgeSizes = measureEdgeSizes(result.mesh);
+  }
   reporter.progress(Stage::Merge, 1.0);
   return Status::success();
 }
@@ -310,6 +317,10 @@ Status adaptMesh(
     InputRepairs repairs;
     status = prepareInput(rawInput, input, repairs);
     reportRepairs(rawInput, repairs, summary);
+  }
+  if (status.ok() && input.hasSizes())
+  {
+    limitSizeGradation(input, options.sizeGradation, input.sizes);
   }
   if (status.ok())
   {

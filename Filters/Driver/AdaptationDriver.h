@@ -11,6 +11,7 @@
 #include "Core/TetMesh.h"
 #include "Merge/MeshMerge.h"
 #include "PhaseReporter.h"
+#include "Refinement/SizeField.h"
 
 #include <cstdint>
 #include <string>
@@ -45,6 +46,7 @@ struct AdaptationSummary
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
   std::int64_t poorTets = 0; // tets below the improvement target when first looked at
+  EdgeSizeReport edgeSizes;  // with a size field: the output's edges against it
   // Seconds each partition's heal and refinement took, per iteration: entry
   // iteration * plan.partitions + partition (the data for makespan models).
   std::vector<double> partitionTaskSeconds;
@@ -64,6 +66,8 @@ struct AdaptationResult
   // Per output tet: 1 when it touches a vertex that lay on an interface between refinement
   // partitions (to compare quality near former interfaces with the interior).
   std::vector<char> nearFormerInterface;
+  // With a size field (mesh.sizes): per output tet, its longest edge over its corners' mean size.
+  std::vector<double> edgeLengthRatio;
   AdaptationSummary summary;
 };
 

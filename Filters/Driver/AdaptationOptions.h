@@ -46,6 +46,8 @@ struct AdaptationOptions
   int numberOfIterations;
   double maximumEdgeLength;
   double edgeLengthFactor;
+  std::string sizeArrayName; // read by the VTK adapter, which fills TetMesh::sizes
+  double sizeGradation;
   double maximumVolume;
   double volumeFactor;
   double radiusEdgeRatio;
@@ -122,6 +124,15 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "split edges longer than L (absolute); 0: use EdgeLengthFactor", &O::maximumEdgeLength },
     { "EdgeLengthFactor", "--edge-length-factor", "F", K::Real, 0, Unbounded, 0.5, "", S::Template,
       "split edges longer than F x the input's mean edge length", &O::edgeLengthFactor },
+    { "SizeArrayName", "--size-array", "NAME", K::Text, 0, 0, 0, "", S::Template,
+      "point array (or cell array, averaged to the points) of target edge lengths h: edges "
+      "longer than sqrt(2) h at their midpoint are split, instead of the threshold; set "
+      "NumberOfIterations high enough (passes stop when nothing changes)",
+      &O::sizeArrayName },
+    { "SizeGradation", "--size-gradation", "G", K::Real, 1, Unbounded, 1.3, "", S::Template,
+      "with SizeArrayName: the field is lowered until neighbouring points' sizes differ by at "
+      "most this factor per edge (as MMG's -hgrad); a large value leaves it as given",
+      &O::sizeGradation },
     { "MaximumVolume", "--max-volume", "V", K::Real, 0, Unbounded, 0, "", S::Delaunay,
       "TetGen's volume bound (switch a), absolute; 0: use VolumeFactor", &O::maximumVolume },
     { "VolumeFactor", "--volume-factor", "F", K::Real, 0, Unbounded, 0.1, "", S::Delaunay,

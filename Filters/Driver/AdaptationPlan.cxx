@@ -3,6 +3,7 @@
 #include "Coloring/PartitionColoring.h"
 #include "Core/Geometry.h"
 #include "ParallelFor.h"
+#include "Refinement/SizeField.h"
 #include "Refinement/TetGenRefiner.h"
 
 #include <algorithm>
@@ -24,7 +25,7 @@ Status invalidOption(std::string message)
   return Status::failure(ErrorKind::InvalidOption, std::move(message));
 }
 
-Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool empty)
+Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool hasSizes, bool empty)
 {
   if (options.numberOfIterations < 0)
   {
@@ -46,10 +47,19 @@ Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool empt
   {
     return invalidOption("unknown colouring '" + options.coloring + "'");
   }
-  if (options.method == RefinementMethod::Template && !(options.maximumEdgeLength > 0) &&
-    !(options.edgeLengthFactor > 0))
+  if (options.method == RefinementMethod::Template && !hasSizes &&
+    !(options.maximumEdgeLength > 0) && !(options.edgeLengthFactor > 0))
   {
     return invalidOption("set a positive maximum edge length or edge length factor");
+  }
+  if (options.method == RefinementMethod::Delaunay && hasSizes)
+  {
+    return invalidOption("a size field works with the Template method only; Delaunay refines to "
+                         "one volume bound (MaximumVolume or VolumeFactor)");
+  }
+  if (hasSizes && !(options.sizeGradation >= 1.0))
+  {
+    return invalidOption("the size gradation must be at least 1");
   }
   if (options.method == RefinementMethod::Delaunay)
   {
@@ -197,7 +207,15 @@ Status checkOptionsAndInput(const TetMesh& input, const AdaptationOptions& optio
       }
     }
   }
-  return checkOptions(options, input.hasRegions(), input.tets.empty());
+  if (input.hasSizes())
+  {
+    const Status sizes = checkSizeField(input);
+    if (!sizes.ok())
+    {
+      return sizes;
+    }
+  }
+  return checkOptions(options, input.hasRegions(), input.hasSizes(), input.tets.empty());
 }
 
 AdaptationPlan resolvePlan(
@@ -212,6 +230,10 @@ AdaptationPlan resolvePlan(
     plan.edgeLengthThreshold = interfaceEdgeLengthForVolume(plan.volumeBound);
     // Improvement must not undo Delaunay refinement's volume bound.
     plan.improvementVolumeBound = plan.volumeBound;
+  }
+  else if (input.hasSizes())
+  {
+    plan.sizeField = true; // edges are measured against the field; no single threshold
   }
   else
   {

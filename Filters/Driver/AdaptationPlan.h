@@ -19,6 +19,7 @@ struct AdaptationPlan
   int partitions = 1; // refinement partitions (after clamping, or by region)
   PartitionerKind partitioner = PartitionerKind::Metis; // never Automatic; METIS by region
   double edgeLengthThreshold = 0;    // template threshold, or Delaunay's interface edge length
+  bool sizeField = false;            // templates split against the input's size field instead
   double volumeBound = 0;            // Delaunay: the absolute volume bound; 0 for templates
   int boxesPerAxis = 1;              // improvement sweeps: boxes along each axis
   double improvementVolumeBound = 0; // improvement must not make tets larger than this (0: none)

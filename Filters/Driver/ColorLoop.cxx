@@ -114,12 +114,14 @@ Status numberNewPoints(
     PartitionRefinement& refinement = iteration.refinements[p];
     state.coordinates.insert(
       state.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
+    state.sizes.insert(state.sizes.end(), refinement.newSizes.begin(), refinement.newSizes.end());
     state.newPointSources.insert(state.newPointSources.end(), refinement.newPointSources.begin(),
       refinement.newPointSources.end());
     state.movedPoints.insert(
       state.movedPoints.end(), refinement.movedPoints.begin(), refinement.movedPoints.end());
     refinement.movedPoints.clear();
     refinement.newCoordinates = std::vector<double>();
+    refinement.newSizes = std::vector<double>();
     refinement.newPointSources = std::vector<PointSource>();
   }
   return status;
@@ -325,6 +327,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     context.refinement.coordinates = &state.coordinates;
     context.refinement.interfaceVertex = &interfaceVertex;
     context.refinement.squaredThreshold = setup.squaredThreshold;
+    context.refinement.sizes = state.sizes.empty() ? nullptr : &state.sizes;
     context.refinement.templates = setup.templates;
     Status forecast = checkForecastSize(setup, context.refinement, state);
     if (!forecast.ok())

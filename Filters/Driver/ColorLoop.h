@@ -24,6 +24,7 @@ struct AdaptationState
 {
   std::vector<PartitionMesh> partitions;
   std::vector<double> coordinates; // all global points
+  std::vector<double> sizes;       // with a size field: h of every global point
   PointId inputPointCount = 0;
   std::vector<PointSource> newPointSources; // for global points from inputPointCount on
   std::vector<PointId> movedPoints;         // points quality improvement moved (may repeat)

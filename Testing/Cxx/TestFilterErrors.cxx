@@ -7,14 +7,18 @@
 #include "vtkCellType.h"
 #include "vtkCoarseGrainedMeshAdaptation.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace
 {
@@ -130,6 +134,80 @@ void test_regionArrayChoices()
   }
 }
 
+// A size array as a point or a cell array refines and reports EdgeLengthRatio and the share of
+// edges within the field; bad ones are refused with the array and the first bad value named.
+void test_sizeArrays()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(3);
+  vtkNew<vtkDoubleArray> pointSizes;
+  pointSizes->SetName("PointSize");
+  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
+  {
+    pointSizes->InsertNextValue(0.05 + 0.2 * input->GetPoint(p)[0]);
+  }
+  input->GetPointData()->AddArray(pointSizes);
+  vtkNew<vtkDoubleArray> cellSizes;
+  cellSizes->SetName("CellSize");
+  for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+  {
+    cellSizes->InsertNextValue(0.15);
+  }
+  input->GetCellData()->AddArray(cellSizes);
+  for (const char* name : { "PointSize", "CellSize" })
+  {
+    FilterRun run(input);
+    run.Filter->SetSizeArrayName(name);
+    run.Filter->SetNumberOfIterations(8);
+    run.update();
+    vtkUnstructuredGrid* output = run.Filter->GetOutput();
+    CGMESH_CHECK(run.Messages->Errors == 0 && run.outputCells() > input->GetNumberOfCells(),
+      "size array " << name << " did not refine: " << run.Messages->AllMessages);
+    vtkDataArray* ratios = output->GetCellData()->GetArray("EdgeLengthRatio");
+    CGMESH_CHECK(ratios && ratios->GetNumberOfTuples() == output->GetNumberOfCells(),
+      "no EdgeLengthRatio per cell with size array " << name);
+    // Every edge is at most sqrt(2) h at its midpoint, so the longest edge over the corners'
+    // mean h stays below about sqrt(2) (the mean and the midpoint's h differ by the gradient).
+    CGMESH_CHECK(ratios && ratios->GetRange()[1] < 1.6,
+      "EdgeLengthRatio up to " << (ratios ? ratios->GetRange()[1] : 0) << " with " << name);
+    vtkDataArray* within = output->GetFieldData()->GetArray("EdgesWithinSizeBounds");
+    CGMESH_CHECK(within && within->GetComponent(0, 0) > 0.5 && within->GetComponent(0, 0) <= 1,
+      "EdgesWithinSizeBounds missing or implausible with " << name);
+  }
+
+  vtkNew<vtkDoubleArray> negative;
+  negative->DeepCopy(pointSizes);
+  negative->SetName("Negative");
+  negative->SetValue(5, -1.0);
+  input->GetPointData()->AddArray(negative);
+  vtkNew<vtkDoubleArray> vectors;
+  vectors->SetName("Vectors");
+  vectors->SetNumberOfComponents(3);
+  vectors->SetNumberOfTuples(input->GetNumberOfPoints());
+  vectors->Fill(1.0);
+  input->GetPointData()->AddArray(vectors);
+  const std::pair<const char*, const char*> badArrays[] = { { "NoSuchSize", "LinearField" },
+    { "Negative", "point 5 is -1" }, { "Vectors", "3 components" } };
+  for (const auto& bad : badArrays)
+  {
+    FilterRun run(input);
+    run.Filter->SetSizeArrayName(bad.first);
+    run.update();
+    CGMESH_CHECK(run.Messages->Errors > 0 && run.outputCells() == 0,
+      "size array " << bad.first << " accepted");
+    CGMESH_CHECK(run.Messages->AllMessages.find(bad.first) != std::string::npos &&
+        run.Messages->AllMessages.find(bad.second) != std::string::npos,
+      "the error for " << bad.first << " lacks '" << bad.second
+                       << "': " << run.Messages->AllMessages);
+  }
+  FilterRun delaunay(input);
+  delaunay.Filter->SetSizeArrayName("PointSize");
+  delaunay.Filter->SetMethodToDelaunay();
+  delaunay.update();
+  CGMESH_CHECK(delaunay.Messages->Errors > 0 &&
+      delaunay.Messages->AllMessages.find("Template method only") != std::string::npos,
+    "a size field with Delaunay not refused clearly: " << delaunay.Messages->AllMessages);
+}
+
 void test_emptyInput()
 {
   vtkNew<vtkUnstructuredGrid> input;
@@ -235,6 +313,7 @@ int main()
   test_missingRegionArray();
   test_partitionByRegionWithoutRegionArray();
   test_regionArrayChoices();
+  test_sizeArrays();
   test_emptyInput();
   test_abort();
   test_defaultsAndClamping();

@@ -147,12 +147,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<const char*>{ "greedy", "greedy-lu", "iterative", "recoloring" }[bytes.next() % 4];
   options.maximumNumberOfCells = 2000000;
   options.partitioner = static_cast<PartitionerKind>(bytes.next() % 3); // auto, METIS, Hilbert
+  // A size field on one run in three: sizes between a tenth and the whole of the mesh's extent,
+  // now and then a bad one (zero or negative), with a gradation from 1 to 3.
+  if (bytes.next() % 3 == 0 && input.numberOfPoints() > 0)
+  {
+    for (PointId p = 0; p < input.numberOfPoints(); ++p)
+    {
+      const std::uint8_t byte = bytes.next();
+      input.sizes.push_back(byte == 255 ? -1.0 : byte == 254 ? 0.0 : 0.1 + byte / 255.0);
+    }
+    options.sizeGradation = 1.0 + 2.0 * bytes.unit();
+  }
 
   const bool inputValid = inspectMesh(input).isValid();
   const TetMesh copy = input;
   AdaptationResult result;
   const Status status = adaptMesh(input, options, result);
-  if (copy.tets != input.tets || copy.regions != input.regions ||
+  if (copy.tets != input.tets || copy.regions != input.regions || copy.sizes != input.sizes ||
     std::memcmp(copy.coordinates.data(), input.coordinates.data(),
       copy.coordinates.size() * sizeof(double)) != 0)
   {

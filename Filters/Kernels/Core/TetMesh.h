@@ -19,10 +19,12 @@ struct TetMesh
   std::vector<double> coordinates; // x, y, z per point
   std::vector<Tet> tets;           // four point ids per tetrahedron
   std::vector<int> regions;        // one material/region id per tet, or empty
+  std::vector<double> sizes;       // target edge length h per point (a size field), or empty
 
   PointId numberOfPoints() const { return static_cast<PointId>(coordinates.size() / 3); }
   CellId numberOfTets() const { return static_cast<CellId>(tets.size()); }
   bool hasRegions() const { return !regions.empty(); }
+  bool hasSizes() const { return !sizes.empty(); }
   const double* point(PointId id) const { return coordinates.data() + 3 * id; }
 };
 

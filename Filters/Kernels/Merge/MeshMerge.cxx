@@ -153,7 +153,7 @@ void keepProvenanceOfUsedPoints(
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
   const std::vector<PointSource>& newPointSources, MergedMesh& merged,
-  const RelocationInput& relocation, bool withProvenance)
+  const RelocationInput& relocation, bool withProvenance, const std::vector<double>* pointSizes)
 {
   try
   {
@@ -187,6 +187,10 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
       {
         merged.mesh.coordinates.insert(merged.mesh.coordinates.end(), coordinates.begin() + 3 * p,
           coordinates.begin() + 3 * p + 3);
+        if (pointSizes)
+        {
+          merged.mesh.sizes.push_back((*pointSizes)[p]);
+        }
       }
     }
     if (withProvenance)

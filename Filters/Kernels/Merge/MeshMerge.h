@@ -43,12 +43,14 @@ struct RelocationInput
   const std::vector<PointId>* movedPoints = nullptr;
 };
 
-// `withProvenance` false leaves merged.provenance empty (nothing to interpolate).
+// `withProvenance` false leaves merged.provenance empty (nothing to interpolate). `pointSizes`
+// (one size per global point) gives merged.mesh.sizes.
 
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
   const std::vector<PointSource>& newPointSources, MergedMesh& merged,
-  const RelocationInput& relocation = RelocationInput(), bool withProvenance = true);
+  const RelocationInput& relocation = RelocationInput(), bool withProvenance = true,
+  const std::vector<double>* pointSizes = nullptr);
 
 } // namespace cgmesh
 

@@ -1,6 +1,7 @@
 #include "Refinement/PartitionRefiner.h"
 
 #include "Core/Geometry.h"
+#include "Refinement/SizeField.h"
 
 #include <algorithm>
 #include <new>
@@ -26,11 +27,19 @@ public:
     return pointCoordinates(*this->Context.coordinates, this->Refinement.newCoordinates, id);
   }
 
+  double sizeOf(PointId id) const
+  {
+    return isProvisional(id) ? this->Refinement.newSizes[provisionalIndex(id)]
+                             : (*this->Context.sizes)[id];
+  }
+
   bool isLong(PointId a, PointId b) const
   {
     const double* pa = this->coordinatesOf(std::min(a, b));
     const double* pb = this->coordinatesOf(std::max(a, b));
-    return squaredDistance(pa, pb) > this->Context.squaredThreshold;
+    const double lengthSquared = squaredDistance(pa, pb);
+    return this->Context.sizes ? longerThanSize(lengthSquared, this->sizeOf(a), this->sizeOf(b))
+                               : lengthSquared > this->Context.squaredThreshold;
   }
 
   // The midpoint of edge (a, b): the one a neighbour inserted, one made earlier in this
@@ -72,6 +81,10 @@ private:
       this->Refinement.newCoordinates.push_back(0.5 * (pa[axis] + pb[axis]));
     }
     this->Refinement.newPointSources.push_back(PointSource::midpoint(key));
+    if (this->Context.sizes)
+    {
+      this->Refinement.newSizes.push_back(0.5 * (this->sizeOf(key.low) + this->sizeOf(key.high)));
+    }
     ++this->Refinement.createdSplits;
     if (this->onInterface(key.low) && this->onInterface(key.high))
     {
@@ -172,7 +185,10 @@ std::int64_t predictTemplateTetCount(
       const PointId a = tet[TetEdgeCorners[e][0]], b = tet[TetEdgeCorners[e][1]];
       const double lengthSquared = squaredDistance(
         coordinates.data() + 3 * std::min(a, b), coordinates.data() + 3 * std::max(a, b));
-      splitMask |= (lengthSquared > context.squaredThreshold) << e;
+      const bool isLong = context.sizes
+        ? longerThanSize(lengthSquared, (*context.sizes)[a], (*context.sizes)[b])
+        : lengthSquared > context.squaredThreshold;
+      splitMask |= isLong << e;
     }
     count += splitMask == 0 ? 1
       : splitMask == 63     ? 8

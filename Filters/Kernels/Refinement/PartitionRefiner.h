@@ -23,6 +23,9 @@ struct RefinementContext
   const std::vector<double>* coordinates = nullptr;   // global points, xyz
   const std::vector<char>* interfaceVertex = nullptr; // 1 when a point lies in 2+ partitions
   double squaredThreshold = 0;                        // split edges with a larger squared length
+  // With a size field: one size per global point, and edges are split by longerThanSize()
+  // instead of the threshold.
+  const std::vector<double>* sizes = nullptr;
   const TemplateTable* templates = nullptr;
 };
 
@@ -46,6 +49,7 @@ struct EdgeFilter
 struct PartitionRefinement
 {
   std::vector<double> newCoordinates;       // xyz per new vertex
+  std::vector<double> newSizes;             // with a size field: h per new vertex
   std::vector<PointSource> newPointSources; // where each new vertex lies
   Outbox outbox;
   // Vertices this partition made or received during the iteration that lie on an interface

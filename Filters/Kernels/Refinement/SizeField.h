@@ -1,0 +1,50 @@
+// A size field: a target edge length h per point. Template refinement splits an edge (a, b) when
+// it is longer than sqrt(2) times h at its midpoint, (h(a) + h(b)) / 2, and gives the new vertex
+// that h; an edge is within the field when its length lies in [h / sqrt(2), sqrt(2) h] (the
+// measure MMG reports), which repeated halving reaches from above.
+#ifndef cgmesh_SizeField_h
+#define cgmesh_SizeField_h
+
+#include "Core/Status.h"
+#include "Core/TetMesh.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace cgmesh
+{
+
+// Whether an edge of squared length `lengthSquared` between points of sizes ha and hb is too long.
+inline bool longerThanSize(double lengthSquared, double ha, double hb)
+{
+  const double h = 0.5 * (ha + hb);
+  return lengthSquared > 2.0 * h * h;
+}
+
+// Checks one size per point, each positive and finite where a tet uses the point.
+Status checkSizeField(const TetMesh& mesh);
+
+// Limits the field's gradation: afterwards h(b) <= gradation * h(a) for every edge (a, b) of the
+// mesh, by lowering sizes only (each point gets min over all points p of h(p) * gradation^hops).
+// Deterministic; gradation must be at least 1.
+void limitSizeGradation(const TetMesh& mesh, double gradation, std::vector<double>& sizes);
+
+// Edges by their length over h at the midpoint.
+struct EdgeSizeReport
+{
+  std::int64_t edges = 0;
+  double shareWithinBounds = 0; // length / h in [1/sqrt(2), sqrt(2)]
+  // Edge counts in the bins of length / h split at 1/2, 1/sqrt(2), 1, sqrt(2) and 2 (each bin
+  // closed below).
+  std::array<std::int64_t, 6> histogram = {};
+};
+
+EdgeSizeReport measureEdgeSizes(const TetMesh& mesh);
+
+// Per tet: its longest edge over the mean size of its corners.
+std::vector<double> edgeLengthRatios(const TetMesh& mesh);
+
+} // namespace cgmesh
+
+#endif

@@ -1,0 +1,158 @@
+// Size fields: gradation limiting, refinement to a graded field through adaptMesh() (converged,
+// every edge at most sqrt(2) h at its midpoint, conforming, volumes and regions conserved, the
+// same output for any thread count) and the refusal of bad fields.
+#include "AdaptationDriver.h"
+#include "Core/Geometry.h"
+#include "CubeGenerator.h"
+#include "Refinement/SizeField.h"
+#include "ResultComparison.h"
+#include "TestHarness.h"
+#include "Validation/MeshValidation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace cgmesh;
+
+namespace
+{
+
+// A band of fine sizes along x = 0.5, coarse towards x = 0 and 1, and two regions.
+TetMesh gradedCube(int n)
+{
+  TetMesh mesh;
+  CHECK(generateKuhnCube(n, mesh).ok());
+  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  {
+    mesh.sizes.push_back(0.04 + 0.3 * std::abs(mesh.point(p)[0] - 0.5));
+  }
+  for (const Tet& tet : mesh.tets)
+  {
+    mesh.regions.push_back(mesh.point(tet[0])[2] + mesh.point(tet[3])[2] < 1.0 ? 1 : 2);
+  }
+  return mesh;
+}
+
+void test_gradation_limits_neighbouring_sizes()
+{
+  TetMesh mesh;
+  CHECK(generateKuhnCube(6, mesh).ok());
+  mesh.sizes.assign(mesh.numberOfPoints(), 1.0);
+  mesh.sizes[100] = 0.01;
+  const std::vector<double> given = mesh.sizes;
+  limitSizeGradation(mesh, 1.3, mesh.sizes);
+  CHECK_EQUAL(mesh.sizes[100], 0.01);
+  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  {
+    CHECK(mesh.sizes[p] <= given[p]);
+  }
+  bool lowered = false;
+  for (const Tet& tet : mesh.tets)
+  {
+    for (const auto& corners : TetEdgeCorners)
+    {
+      const double a = mesh.sizes[tet[corners[0]]], b = mesh.sizes[tet[corners[1]]];
+      CHECK(std::max(a, b) <= 1.3 * std::min(a, b) * (1 + 1e-12));
+      lowered = lowered || (a < 1.0 && a > 0.01);
+    }
+  }
+  CHECK(lowered);
+}
+
+void test_refinement_to_a_graded_field()
+{
+  const TetMesh input = gradedCube(5);
+  AdaptationOptions options;
+  options.numberOfIterations = 12;
+  options.numberOfPartitions = 16;
+  options.numberOfThreads = 1;
+  AdaptationResult serial;
+  CHECK(adaptMesh(input, options, serial).ok());
+  CHECK(serial.summary.plan.sizeField);
+  CHECK(serial.summary.refinementConverged);
+  CHECK(serial.summary.iterationsRun < 12);
+  CHECK(serial.mesh.numberOfTets() > 10 * input.numberOfTets());
+
+  const MeshReport before = inspectMesh(input);
+  const MeshReport after = inspectMesh(serial.mesh);
+  if (!after.isValid())
+  {
+    std::cerr << after.describeProblems();
+  }
+  CHECK(after.isValid());
+  CHECK_CLOSE(after.volume, before.volume, 1e-12);
+  CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
+  CHECK_CLOSE(after.regionInterfaceArea, before.regionInterfaceArea, 1e-12);
+  for (const auto& region : before.regionVolumes)
+  {
+    CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
+  }
+
+  // Converged: no edge is longer than sqrt(2) h at its midpoint, h being the graded field
+  // interpolated along the splits.
+  CHECK_EQUAL(serial.mesh.sizes.size(), static_cast<std::size_t>(serial.mesh.numberOfPoints()));
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const Tet& tet : serial.mesh.tets)
+  {
+    for (const auto& corners : TetEdgeCorners)
+    {
+      const PointId a = tet[corners[0]], b = tet[corners[1]];
+      CHECK(!longerThanSize(
+        squaredEdgeLength(serial.mesh, a, b), serial.mesh.sizes[a], serial.mesh.sizes[b]));
+    }
+    for (PointId p : tet)
+    {
+      smallest = std::min(smallest, serial.mesh.sizes[p]);
+    }
+  }
+  // Midpoints average their ends and gradation only lowers sizes towards the smallest one, so
+  // the finest size is the input's.
+  CHECK_CLOSE(smallest, *std::min_element(input.sizes.begin(), input.sizes.end()), 1e-12);
+  CHECK_EQUAL(serial.edgeLengthRatio.size(), static_cast<std::size_t>(serial.mesh.numberOfTets()));
+  CHECK(*std::max_element(serial.edgeLengthRatio.begin(), serial.edgeLengthRatio.end()) < 1.6);
+  CHECK(serial.summary.edgeSizes.edges > 0);
+  CHECK(serial.summary.edgeSizes.shareWithinBounds > 0.8);
+  CHECK_EQUAL(serial.summary.edgeSizes.histogram[4] + serial.summary.edgeSizes.histogram[5], 0);
+
+  for (int threads : { 2, 3 })
+  {
+    options.numberOfThreads = threads;
+    AdaptationResult parallel;
+    CHECK(adaptMesh(input, options, parallel).ok());
+    CHECK(cgmesh_test::identicalResults(serial, parallel));
+    CHECK(parallel.mesh.sizes == serial.mesh.sizes);
+  }
+}
+
+void test_bad_size_fields_are_refused()
+{
+  AdaptationOptions options;
+  AdaptationResult result;
+  TetMesh input = gradedCube(2);
+  input.sizes[3] = -0.5;
+  Status status = adaptMesh(input, options, result);
+  CHECK(status.kind() == ErrorKind::InvalidInput);
+  CHECK(status.message().find("point 3") != std::string::npos);
+  input.sizes[3] = std::numeric_limits<double>::quiet_NaN();
+  CHECK(adaptMesh(input, options, result).kind() == ErrorKind::InvalidInput);
+  input.sizes.pop_back();
+  CHECK(adaptMesh(input, options, result).kind() == ErrorKind::InvalidInput);
+
+  input = gradedCube(2);
+  options.method = RefinementMethod::Delaunay;
+  CHECK(adaptMesh(input, options, result).kind() == ErrorKind::InvalidOption);
+  options.method = RefinementMethod::Template;
+  options.sizeGradation = 0.5;
+  CHECK(adaptMesh(input, options, result).kind() == ErrorKind::InvalidOption);
+}
+
+} // namespace
+
+int main()
+{
+  test_gradation_limits_neighbouring_sizes();
+  test_refinement_to_a_graded_field();
+  test_bad_size_fields_are_refused();
+  return cgmesh_test::finish("TestSizeField");
+}
