@@ -97,10 +97,11 @@ Status checkSizeBeforeRefining(vtkUnstructuredGrid* input, const AdaptationOptio
   const double limit = static_cast<double>(options.maximumNumberOfCells);
   const int iterations = options.numberOfIterations;
   // With one iteration the filter's forecast is exact and comes before any large allocation.
-  // A size field has no single threshold to bound with: the filter's forecast of every pass
-  // guards it.
+  // A size field has no single threshold to bound with, and a selection splits only part of the
+  // mesh: the filter's forecast of every pass guards them.
   if (options.method != RefinementMethod::Template || limit <= 0 || iterations < 2 ||
-    !options.sizeArrayName.empty())
+    !options.sizeArrayName.empty() || !options.refinementRegions.empty() ||
+    !options.refinementBox.empty())
     return Status::success();
   const double cells = static_cast<double>(input->GetNumberOfCells());
   if (cells * leastTetsAfterWholeSplits(std::min(iterations, MaximumCountedSplits)) <= limit)

@@ -116,7 +116,8 @@ public:
    * Template: MaximumEdgeLength (0: unused) or EdgeLengthFactor (0.5); or a size field:
    * SizeArrayName (a point or cell array of target edge lengths; none by default) and
    * SizeGradation (1.3), with the cell array EdgeLengthRatio and the field data
-   * EdgesWithinSizeBounds and EdgeSizeRatioHistogram in the output.
+   * EdgesWithinSizeBounds and EdgeSizeRatioHistogram in the output. RefinementRegions ("2,5":
+   * region ids) and RefinementBox ("x0,y0,z0,x1,y1,z1"): refine only there (empty: everywhere).
    * Delaunay: MaximumVolume (0: unused) or VolumeFactor (0.1), RadiusEdgeRatio (2, at least 1).
    * ImproveQuality (on) and NumberOfImprovementPasses (2, in [0, 20]).
    * NumberOfThreads (0: all cores; the output does not depend on it).
@@ -135,6 +136,8 @@ public:
   cgmeshParameterMacro(EdgeLengthFactor, double);
   cgmeshTextParameterMacro(SizeArrayName);
   cgmeshParameterMacro(SizeGradation, double);
+  cgmeshTextParameterMacro(RefinementRegions);
+  cgmeshTextParameterMacro(RefinementBox);
   cgmeshParameterMacro(MaximumVolume, double);
   cgmeshParameterMacro(VolumeFactor, double);
   cgmeshParameterMacro(RadiusEdgeRatio, double);

@@ -255,7 +255,7 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   MergedMesh merged;
   status = mergePartitions(state.partitions, state.coordinates, state.inputPointCount,
     state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints },
-    options.pointProvenance, state.sizes.empty() ? nullptr : &state.sizes);
+    options.pointProvenance, summary.plan.sizeField ? &state.sizes : nullptr);
   if (!status.ok())
   {
     return status;
@@ -325,6 +325,13 @@ Status adaptMesh(
   if (status.ok())
   {
     summary.plan = resolvePlan(input, options, summary.warnings);
+    if (summary.plan.restricted())
+    {
+      const std::array<double, 6>* box =
+        summary.plan.hasRefinementBox ? &summary.plan.refinementBox : nullptr;
+      restrictToSelection(input, selectTets(input, summary.plan.refinementRegions, box),
+        summary.plan.edgeLengthThreshold, input.sizes);
+    }
     reporter.progress(Stage::Prepare, 1.0);
     try
     {

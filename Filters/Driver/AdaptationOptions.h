@@ -48,6 +48,8 @@ struct AdaptationOptions
   double edgeLengthFactor;
   std::string sizeArrayName; // read by the VTK adapter, which fills TetMesh::sizes
   double sizeGradation;
+  std::string refinementRegions; // "2,5": region ids (parsed into the plan)
+  std::string refinementBox;     // "x0,y0,z0,x1,y1,z1"
   double maximumVolume;
   double volumeFactor;
   double radiusEdgeRatio;
@@ -133,6 +135,14 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "with SizeArrayName: the field is lowered until neighbouring points' sizes differ by at "
       "most this factor per edge (as MMG's -hgrad); a large value leaves it as given",
       &O::sizeGradation },
+    { "RefinementRegions", "--refine-regions", "IDS", K::Text, 0, 0, 0, "", S::Template,
+      "comma-separated region ids of RegionArrayName: only their tets are refined, the others "
+      "only where they share a face with them (closure templates); empty: every region",
+      &O::refinementRegions },
+    { "RefinementBox", "--refine-box", "X0,Y0,Z0,X1,Y1,Z1", K::Text, 0, 0, 0, "", S::Template,
+      "only tets whose bounding box meets this box are refined (with RefinementRegions: tets in "
+      "both); empty: everywhere",
+      &O::refinementBox },
     { "MaximumVolume", "--max-volume", "V", K::Real, 0, Unbounded, 0, "", S::Delaunay,
       "TetGen's volume bound (switch a), absolute; 0: use VolumeFactor", &O::maximumVolume },
     { "VolumeFactor", "--volume-factor", "F", K::Real, 0, Unbounded, 0.1, "", S::Delaunay,

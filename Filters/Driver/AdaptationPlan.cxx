@@ -7,7 +7,9 @@
 #include "Refinement/TetGenRefiner.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 namespace cgmesh
@@ -25,8 +27,91 @@ Status invalidOption(std::string message)
   return Status::failure(ErrorKind::InvalidOption, std::move(message));
 }
 
+// Comma-separated numbers; false on anything else (an empty text gives no numbers).
+bool parseNumbers(const std::string& text, std::vector<double>& numbers)
+{
+  numbers.clear();
+  std::size_t position = 0;
+  while (position < text.size())
+  {
+    const std::size_t comma = text.find(',', position);
+    const std::string item =
+      text.substr(position, comma == std::string::npos ? std::string::npos : comma - position);
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    if (item.empty() || end == item.c_str() ||
+      std::string(end).find_first_not_of(' ') != std::string::npos || !std::isfinite(value))
+    {
+      return false;
+    }
+    numbers.push_back(value);
+    if (comma == std::string::npos)
+    {
+      break;
+    }
+    position = comma + 1;
+    if (position == text.size())
+    {
+      return false; // a trailing comma
+    }
+  }
+  return true;
+}
+
+Status parseSelection(const AdaptationOptions& options, AdaptationPlan& plan)
+{
+  std::vector<double> numbers;
+  if (!parseNumbers(options.refinementRegions, numbers))
+  {
+    return invalidOption("RefinementRegions '" + options.refinementRegions +
+      "' is not a comma-separated list of region ids");
+  }
+  for (double value : numbers)
+  {
+    if (value != std::round(value) || std::abs(value) > INT_MAX)
+    {
+      return invalidOption("RefinementRegions '" + options.refinementRegions +
+        "' holds a value that is not an integer region id");
+    }
+    plan.refinementRegions.push_back(static_cast<int>(value));
+  }
+  if (!parseNumbers(options.refinementBox, numbers) || (numbers.size() != 6 && !numbers.empty()))
+  {
+    return invalidOption("RefinementBox '" + options.refinementBox +
+      "' is not six comma-separated numbers x0,y0,z0,x1,y1,z1");
+  }
+  if (numbers.size() == 6)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (numbers[axis] > numbers[axis + 3])
+      {
+        return invalidOption(
+          "RefinementBox '" + options.refinementBox + "' has a lower corner above its upper one");
+      }
+    }
+    plan.hasRefinementBox = true;
+    std::copy(numbers.begin(), numbers.end(), plan.refinementBox.begin());
+  }
+  return Status::success();
+}
+
 Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool hasSizes, bool empty)
 {
+  AdaptationPlan selection;
+  const Status parsed = parseSelection(options, selection);
+  if (!parsed.ok())
+  {
+    return parsed;
+  }
+  if (!selection.refinementRegions.empty() && !hasRegions && !empty)
+  {
+    return invalidOption("RefinementRegions needs a region array (RegionArrayName)");
+  }
+  if (selection.restricted() && options.method == RefinementMethod::Delaunay)
+  {
+    return invalidOption("RefinementRegions and RefinementBox work with the Template method only");
+  }
   if (options.numberOfIterations < 0)
   {
     return invalidOption("the number of iterations must not be negative");
@@ -243,6 +328,7 @@ AdaptationPlan resolvePlan(
   }
   plan.partitions = resolvePartitions(input, options, plan.volumeBound, warnings);
   plan.partitioner = resolvePartitioner(options);
+  parseSelection(options, plan); // checked in checkOptionsAndInput
   // About as many boxes as refinement partitions, so that a box is about a partition's size.
   plan.boxesPerAxis =
     std::max(1, static_cast<int>(std::lround(std::cbrt(std::max(1, plan.partitions)))));

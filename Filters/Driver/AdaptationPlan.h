@@ -8,6 +8,7 @@
 #include "Core/Status.h"
 #include "Core/TetMesh.h"
 
+#include <array>
 #include <vector>
 
 namespace cgmesh
@@ -18,8 +19,12 @@ struct AdaptationPlan
   int threads = 1;    // 0 in the options means every core
   int partitions = 1; // refinement partitions (after clamping, or by region)
   PartitionerKind partitioner = PartitionerKind::Metis; // never Automatic; METIS by region
-  double edgeLengthThreshold = 0;    // template threshold, or Delaunay's interface edge length
-  bool sizeField = false;            // templates split against the input's size field instead
+  double edgeLengthThreshold = 0;     // template threshold, or Delaunay's interface edge length
+  bool sizeField = false;             // templates split against the input's size field instead
+  std::vector<int> refinementRegions; // refine only tets of these regions (empty: all)
+  bool hasRefinementBox = false;      // refine only tets meeting refinementBox
+  std::array<double, 6> refinementBox = {};
+  bool restricted() const { return !refinementRegions.empty() || hasRefinementBox; }
   double volumeBound = 0;            // Delaunay: the absolute volume bound; 0 for templates
   int boxesPerAxis = 1;              // improvement sweeps: boxes along each axis
   double improvementVolumeBound = 0; // improvement must not make tets larger than this (0: none)

@@ -10,6 +10,7 @@
 #include "Validation/MeshValidation.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -147,6 +148,122 @@ void test_bad_size_fields_are_refused()
   CHECK(adaptMesh(input, options, result).kind() == ErrorKind::InvalidOption);
 }
 
+// Children per input tet, and whether an input tet shares a point with a selected one.
+std::vector<int> childrenOf(const AdaptationResult& result, CellId inputTets)
+{
+  std::vector<int> children(inputTets, 0);
+  for (CellId parent : result.parentCell)
+  {
+    ++children[parent];
+  }
+  return children;
+}
+
+std::vector<char> touchesSelected(const TetMesh& mesh, const std::vector<char>& selected)
+{
+  std::vector<char> pointSelected(mesh.numberOfPoints(), 0), touches(mesh.tets.size(), 0);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    for (PointId p : mesh.tets[t])
+    {
+      pointSelected[p] |= selected[t];
+    }
+  }
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    for (PointId p : mesh.tets[t])
+    {
+      touches[t] |= pointSelected[p];
+    }
+  }
+  return touches;
+}
+
+// Refinement restricted to a region or a box: the selected tets are refined, the tets that share
+// no point with them are untouched, the mesh stays conforming with every region's volume, and
+// the output does not depend on the thread count.
+void test_refinement_regions_and_box()
+{
+  TetMesh input = gradedCube(6);
+  input.sizes.clear();
+  const std::array<double, 6> box = { 0, 0, 0, 0.3, 1, 1 };
+  struct Case
+  {
+    const char* regions;
+    const char* box;
+  };
+  for (const Case& selection : { Case{ "2", "" }, Case{ "", "0,0,0,0.3,1,1" } })
+  {
+    AdaptationOptions options;
+    options.refinementRegions = selection.regions;
+    options.refinementBox = selection.box;
+    options.numberOfIterations = 2;
+    options.numberOfPartitions = 16;
+    options.numberOfThreads = 1;
+    AdaptationResult serial;
+    CHECK(adaptMesh(input, options, serial).ok());
+    CHECK(serial.summary.plan.restricted());
+    CHECK(!serial.summary.plan.sizeField && serial.edgeLengthRatio.empty());
+    const MeshReport before = inspectMesh(input);
+    const MeshReport after = inspectMesh(serial.mesh);
+    CHECK(after.isValid());
+    CHECK_CLOSE(after.volume, before.volume, 1e-12);
+    CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
+    for (const auto& region : before.regionVolumes)
+    {
+      CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
+    }
+    const std::vector<char> selected =
+      selection.box[0] ? selectTets(input, {}, &box) : selectTets(input, { 2 }, nullptr);
+    const std::vector<char> near = touchesSelected(input, selected);
+    const std::vector<int> children = childrenOf(serial, input.numberOfTets());
+    int refined = 0, untouched = 0;
+    for (std::size_t t = 0; t < input.tets.size(); ++t)
+    {
+      refined += selected[t] && children[t] > 1;
+      untouched += !near[t];
+      CHECK(near[t] || children[t] == 1);
+    }
+    CHECK(refined > 0 && untouched > 0);
+    CHECK(std::count(selected.begin(), selected.end(), 1) < static_cast<long>(selected.size()));
+    options.numberOfThreads = 2;
+    AdaptationResult parallel;
+    CHECK(adaptMesh(input, options, parallel).ok());
+    CHECK(cgmesh_test::identicalResults(serial, parallel));
+  }
+}
+
+void test_bad_selections_are_refused()
+{
+  const TetMesh input = gradedCube(2);
+  TetMesh withoutRegions = input;
+  withoutRegions.regions.clear();
+  withoutRegions.sizes.clear();
+  struct Case
+  {
+    const TetMesh* mesh;
+    const char* regions;
+    const char* box;
+    RefinementMethod method;
+  };
+  const Case cases[] = { { &input, "2,x", "", RefinementMethod::Template },
+    { &input, "2,", "", RefinementMethod::Template },
+    { &input, "2.5", "", RefinementMethod::Template },
+    { &input, "", "0,0,0,1,1", RefinementMethod::Template },
+    { &input, "", "1,0,0,0,1,1", RefinementMethod::Template },
+    { &withoutRegions, "2", "", RefinementMethod::Template },
+    { &withoutRegions, "", "0,0,0,1,1,1", RefinementMethod::Delaunay } };
+  for (const Case& bad : cases)
+  {
+    AdaptationOptions options;
+    options.refinementRegions = bad.regions;
+    options.refinementBox = bad.box;
+    options.method = bad.method;
+    AdaptationResult result;
+    CHECK(adaptMesh(*bad.mesh, options, result).kind() == ErrorKind::InvalidOption);
+  }
+}
+
 } // namespace
 
 int main()
@@ -154,5 +271,7 @@ int main()
   test_gradation_limits_neighbouring_sizes();
   test_refinement_to_a_graded_field();
   test_bad_size_fields_are_refused();
+  test_refinement_regions_and_box();
+  test_bad_selections_are_refused();
   return cgmesh_test::finish("TestSizeField");
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <string>
 #include <utility>
@@ -156,6 +157,10 @@ EdgeSizeReport measureEdgeSizes(const TetMesh& mesh)
   std::int64_t within = 0;
   for (const auto& edge : uniqueEdges(mesh))
   {
+    if (!std::isfinite(mesh.sizes[edge.first]) || !std::isfinite(mesh.sizes[edge.second]))
+    {
+      continue; // outside a refinement selection: the field does not apply there
+    }
     const double length = std::sqrt(squaredEdgeLength(mesh, edge.first, edge.second));
     const double ratio = length / (0.5 * (mesh.sizes[edge.first] + mesh.sizes[edge.second]));
     const int bin = static_cast<int>(std::upper_bound(bounds, bounds + 5, ratio) - bounds);
@@ -182,9 +187,66 @@ std::vector<double> edgeLengthRatios(const TetMesh& mesh)
     }
     const double meanSize =
       0.25 * (mesh.sizes[tet[0]] + mesh.sizes[tet[1]] + mesh.sizes[tet[2]] + mesh.sizes[tet[3]]);
-    ratios[t] = std::sqrt(longest) / meanSize;
+    ratios[t] = std::isfinite(meanSize) ? std::sqrt(longest) / meanSize : 0.0;
   }
   return ratios;
+}
+
+std::vector<char> selectTets(
+  const TetMesh& mesh, const std::vector<int>& regions, const std::array<double, 6>* box)
+{
+  std::vector<char> selected(mesh.tets.size(), 1);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    if (!regions.empty() &&
+      std::find(regions.begin(), regions.end(), mesh.hasRegions() ? mesh.regions[t] : 0) ==
+        regions.end())
+    {
+      selected[t] = 0;
+      continue;
+    }
+    if (box)
+    {
+      for (int axis = 0; axis < 3 && selected[t]; ++axis)
+      {
+        double low = mesh.point(mesh.tets[t][0])[axis], high = low;
+        for (PointId p : mesh.tets[t])
+        {
+          low = std::min(low, mesh.point(p)[axis]);
+          high = std::max(high, mesh.point(p)[axis]);
+        }
+        selected[t] = high >= (*box)[axis] && low <= (*box)[axis + 3];
+      }
+    }
+  }
+  return selected;
+}
+
+void restrictToSelection(const TetMesh& mesh, const std::vector<char>& selectedTets,
+  double threshold, std::vector<double>& sizes)
+{
+  std::vector<char> selectedPoint(static_cast<std::size_t>(mesh.numberOfPoints()), 0);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    if (selectedTets[t])
+    {
+      for (PointId p : mesh.tets[t])
+      {
+        selectedPoint[p] = 1;
+      }
+    }
+  }
+  if (sizes.empty())
+  {
+    sizes.assign(selectedPoint.size(), threshold / std::sqrt(2.0));
+  }
+  for (std::size_t p = 0; p < selectedPoint.size(); ++p)
+  {
+    if (!selectedPoint[p])
+    {
+      sizes[p] = std::numeric_limits<double>::infinity();
+    }
+  }
 }
 
 } // namespace cgmesh

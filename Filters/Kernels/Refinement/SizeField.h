@@ -42,8 +42,23 @@ struct EdgeSizeReport
 
 EdgeSizeReport measureEdgeSizes(const TetMesh& mesh);
 
-// Per tet: its longest edge over the mean size of its corners.
+// Per tet: its longest edge over the mean size of its corners (0 where a corner lies outside a
+// refinement selection, see below).
 std::vector<double> edgeLengthRatios(const TetMesh& mesh);
+
+// Where refinement may happen: tets of the listed regions (empty: any region) whose bounding box
+// meets `box` (xmin, ymin, zmin, xmax, ymax, zmax; null: no box).
+std::vector<char> selectTets(
+  const TetMesh& mesh, const std::vector<int>& regions, const std::array<double, 6>* box);
+
+// Restricts refinement to the selected tets by way of the sizes: a point of no selected tet gets
+// an infinite size, so no edge touching it is split; the others keep their size, or, without a
+// size field (`sizes` empty), get threshold / sqrt(2), which splits exactly the edges longer than
+// the threshold. Midpoints of two selected points are selected in turn, so later passes stay in
+// the selection, and the tets outside change only where they share an edge between two selected
+// points (closure templates on the faces they share with the selection).
+void restrictToSelection(const TetMesh& mesh, const std::vector<char>& selectedTets,
+  double threshold, std::vector<double>& sizes);
 
 } // namespace cgmesh
 
