@@ -88,6 +88,13 @@ void checkRange(const ParameterSpec& spec, vtkXMLDataElement* property)
 void checkDefault(const ParameterSpec& spec, vtkXMLDataElement* property)
 {
   const char* text = property->GetAttribute("default_values");
+  const bool arrayName = property->FindNestedElementWithName("ArrayListDomain") != nullptr;
+  if (spec.kind == ParameterKind::Text && !arrayName && !spec.defaultText[0])
+  {
+    // A free text whose default is empty: ParaView's default too, so the XML gives none.
+    CGMESH_CHECK(!text || !text[0], spec.name << ": XML default " << text << ", table empty");
+    return;
+  }
   CGMESH_CHECK(text != nullptr, spec.name << ": no default_values in the XML");
   if (!text)
   {
@@ -95,7 +102,7 @@ void checkDefault(const ParameterSpec& spec, vtkXMLDataElement* property)
   }
   if (spec.kind == ParameterKind::Text)
   {
-    // "None" is ParaView's "no array" entry: the table's empty default.
+    // "None" is ParaView's "no array" entry: an array name's empty default.
     const std::string expected = spec.defaultText[0] ? spec.defaultText : "None";
     CGMESH_CHECK(expected == text, spec.name << ": XML default " << text);
     return;
