@@ -1,4 +1,4 @@
-"""Renders a refined mesh coloured by ColorId, clipped so that the interior cells show.
+"""Renders a refined mesh coloured by ColorId, cut open so that the interior shows.
 
 When the mesh has a Material array with an isolation oxide (id 8, as written by
 `cgmesh generate finfet`), that surrounding oxide is left out so that the device shows.
@@ -27,12 +27,14 @@ def render(input_file, image_file):
         source = Threshold(Input=reader, Scalars=["CELLS", "Material"],
                            LowerThreshold=0, UpperThreshold=ISOLATION_OXIDE - 1)
 
-    # Keep whole cells behind a plane through the centre (y below it): the cut shows inner cells.
+    # Cut along a plane through the centre (y below it): the cut face shows the colours inside.
+    # Not a crinkle clip: whole cells from both sides of a partition boundary that runs along the
+    # plane (Hilbert parts are cut along grid planes) would speckle the face.
     clip = Clip(Input=source)
     clip.ClipType = "Plane"
     clip.ClipType.Origin = center
     clip.ClipType.Normal = [0.0, 1.0, 0.0]
-    clip.Crinkleclip = 1
+    clip.Crinkleclip = 0
 
     view = GetActiveViewOrCreate("RenderView")
     view.ViewSize = [1280, 1024]
