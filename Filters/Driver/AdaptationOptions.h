@@ -35,29 +35,30 @@ struct AdaptationOptions
 {
   AdaptationOptions() { applyDefaults(*this); }
 
-  // User parameters: documented in parameterTable() below, which also sets their defaults.
-  int numberOfPartitions;
-  PartitionerKind partitioner;
+  // User parameters: documented in parameterTable() below, which also sets their defaults. The
+  // zero initialisers only make the first assignment's "did it change" read a defined value.
+  int numberOfPartitions{};
+  PartitionerKind partitioner{};
   std::string regionArrayName; // read by the VTK adapter, which fills TetMesh::regions
-  bool partitionByRegion;
-  int partitionsPerRegion;
+  bool partitionByRegion{};
+  int partitionsPerRegion{};
   std::string coloring;
-  RefinementMethod method;
-  int numberOfIterations;
-  double maximumEdgeLength;
-  double edgeLengthFactor;
+  RefinementMethod method{};
+  int numberOfIterations{};
+  double maximumEdgeLength{};
+  double edgeLengthFactor{};
   std::string sizeArrayName; // read by the VTK adapter, which fills TetMesh::sizes
-  double sizeGradation;
+  double sizeGradation{};
   std::string refinementRegions; // "2,5": region ids (parsed into the plan)
   std::string refinementBox;     // "x0,y0,z0,x1,y1,z1"
-  double maximumVolume;
-  double volumeFactor;
-  double radiusEdgeRatio;
-  bool improveQuality;
-  int improvementPasses;
-  int numberOfThreads;
-  std::int64_t maximumNumberOfCells;
-  bool diagnostics;
+  double maximumVolume{};
+  double volumeFactor{};
+  double radiusEdgeRatio{};
+  bool improveQuality{};
+  int improvementPasses{};
+  int numberOfThreads{};
+  std::int64_t maximumNumberOfCells{};
+  bool diagnostics{};
 
   // For tests and stress runs, not user parameters.
   // Delaunay: run TetGen calls one at a time even where they could overlap.
