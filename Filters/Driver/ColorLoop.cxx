@@ -6,6 +6,7 @@
 #include "ParallelFor.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace cgmesh
 {
@@ -261,8 +262,12 @@ Status checkForecastSize(
                     state.coordinates.data() + 3 * tet[3]) /
           6.0;
       }
+      // A bound of rounding-noise size (or an overflowing volume) forecasts no finite count: that
+      // is more than any guard allows, not a number to convert.
+      const double added = forecastDelaunayTets(volume, setup.delaunay.maximumVolume);
+      const std::int64_t most = std::numeric_limits<std::int64_t>::max() / (partitions + 1);
       forecast[p] = static_cast<std::int64_t>(partition.tets.size()) +
-        static_cast<std::int64_t>(forecastDelaunayTets(volume, setup.delaunay.maximumVolume));
+        (added < static_cast<double>(most) ? static_cast<std::int64_t>(added) : most);
     });
   std::int64_t total = 0;
   for (std::int64_t count : forecast)
