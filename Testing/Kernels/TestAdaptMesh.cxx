@@ -2,6 +2,7 @@
 // provenance and bit-identical output for any thread count.
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
+#include "MeshChecks.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
 #include "Validation/MeshValidation.h"
@@ -47,22 +48,8 @@ AdaptationResult refine(const TetMesh& input, int partitions, int threads, int i
 
 void checkRefinedCube(const TetMesh& input, const AdaptationResult& result, int iterations)
 {
-  const MeshReport before = inspectMesh(input);
-  const MeshReport after = inspectMesh(result.mesh);
-  if (!after.isValid())
-  {
-    std::cerr << after.describeProblems();
-  }
-  CHECK(after.isValid());
+  cgmesh_test::checkValidAndConserving(input, result.mesh);
   CHECK_EQUAL(result.mesh.numberOfTets(), input.numberOfTets() << (3 * iterations));
-  CHECK_CLOSE(after.volume, before.volume, 1e-12);
-  CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
-  CHECK_CLOSE(after.regionInterfaceArea, before.regionInterfaceArea, 1e-12);
-  CHECK_EQUAL(after.regionVolumes.size(), before.regionVolumes.size());
-  for (const auto& region : before.regionVolumes)
-  {
-    CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
-  }
   // A linear field interpolated through the provenance weights is reproduced exactly.
   for (PointId p = 0; p < result.mesh.numberOfPoints(); ++p)
   {

@@ -5,6 +5,7 @@
 #include "Core/TetQuality.h"
 #include "FinFetGenerator.h"
 #include "Improvement/QualityImprover.h"
+#include "MeshChecks.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
 #include "Validation/MeshValidation.h"
@@ -147,20 +148,7 @@ void test_device_refinement_with_improvement()
   AdaptationResult improved;
   CHECK(adaptMesh(input, options, improved).ok());
 
-  const MeshReport before = inspectMesh(input);
-  const MeshReport after = inspectMesh(improved.mesh);
-  if (!after.isValid())
-  {
-    std::cerr << after.describeProblems();
-  }
-  CHECK(after.isValid());
-  CHECK_CLOSE(after.volume, before.volume, 1e-12);
-  CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
-  CHECK_CLOSE(after.regionInterfaceArea, before.regionInterfaceArea, 1e-12);
-  for (const auto& region : before.regionVolumes)
-  {
-    CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
-  }
+  cgmesh_test::checkValidAndConserving(input, improved.mesh);
   CHECK(
     improved.summary.edgeRemovals + improved.summary.faceSwaps + improved.summary.vertexMoves > 0);
   const double worstPlain = worstMeanRatio(plain.mesh);

@@ -4,6 +4,7 @@
 #include "AdaptationDriver.h"
 #include "Core/Geometry.h"
 #include "CubeGenerator.h"
+#include "MeshChecks.h"
 #include "Refinement/SizeField.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
@@ -75,20 +76,7 @@ void test_refinement_to_a_graded_field()
   CHECK(serial.summary.iterationsRun < 12);
   CHECK(serial.mesh.numberOfTets() > 10 * input.numberOfTets());
 
-  const MeshReport before = inspectMesh(input);
-  const MeshReport after = inspectMesh(serial.mesh);
-  if (!after.isValid())
-  {
-    std::cerr << after.describeProblems();
-  }
-  CHECK(after.isValid());
-  CHECK_CLOSE(after.volume, before.volume, 1e-12);
-  CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
-  CHECK_CLOSE(after.regionInterfaceArea, before.regionInterfaceArea, 1e-12);
-  for (const auto& region : before.regionVolumes)
-  {
-    CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
-  }
+  cgmesh_test::checkValidAndConserving(input, serial.mesh);
 
   // Converged: no edge is longer than sqrt(2) h at its midpoint, h being the graded field
   // interpolated along the splits.
@@ -204,15 +192,7 @@ void test_refinement_regions_and_box()
     CHECK(adaptMesh(input, options, serial).ok());
     CHECK(serial.summary.plan.restricted());
     CHECK(!serial.summary.plan.sizeField && serial.edgeLengthRatio.empty());
-    const MeshReport before = inspectMesh(input);
-    const MeshReport after = inspectMesh(serial.mesh);
-    CHECK(after.isValid());
-    CHECK_CLOSE(after.volume, before.volume, 1e-12);
-    CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
-    for (const auto& region : before.regionVolumes)
-    {
-      CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
-    }
+    cgmesh_test::checkValidAndConserving(input, serial.mesh);
     const std::vector<char> selected =
       selection.box[0] ? selectTets(input, {}, &box) : selectTets(input, { 2 }, nullptr);
     const std::vector<char> near = touchesSelected(input, selected);

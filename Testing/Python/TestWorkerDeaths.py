@@ -6,12 +6,13 @@ that fall back to templates must be exactly the chosen ones, each after a worker
 other partition must still be refined by TetGen (the dead workers were replaced); the output must
 be valid and conserve the material volumes; and all six output files must be identical."""
 import argparse
-import hashlib
 import json
 import os
 import shutil
 import subprocess
 import sys
+
+from TestCommandLine import digest, region_volumes
 
 FAILURES = []
 KILLED = [0, 9, 23, 42, 63]
@@ -22,11 +23,6 @@ def check(condition, message):
     if not condition:
         FAILURES.append(message)
         print("check failed: " + message, file=sys.stderr)
-
-
-def digest(path):
-    with open(path, "rb") as handle:
-        return hashlib.sha256(handle.read()).hexdigest()
 
 
 def refine(cgmesh, mesh, output, threads, killed):
@@ -45,18 +41,6 @@ def refine(cgmesh, mesh, output, threads, killed):
         return result, None
     with open(stats) as handle:
         return result, json.load(handle)
-
-
-def region_volumes(cgmesh, mesh):
-    """{region id: volume} from `cgmesh check`, and its exit status (0: valid)."""
-    result = subprocess.run([cgmesh, "check", mesh, "--region-array", "Material"],
-                            capture_output=True, text=True)
-    volumes = {}
-    for line in result.stdout.splitlines():
-        words = line.split()
-        if len(words) == 3 and words[0] == "region" and words[1].lstrip("-").isdigit():
-            volumes[int(words[1])] = float(words[2])
-    return volumes, result.returncode
 
 
 def main():

@@ -1,5 +1,7 @@
 #include "Partitioning/HilbertPartitioner.h"
 
+#include "Partitioning/MeshPartitioner.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -57,17 +59,10 @@ Status partitionAlongHilbertCurve(
 {
   const CellId tetCount = mesh.numberOfTets();
   partitionOfCell.assign(tetCount, 0);
-  if (numberOfPartitions < 1)
+  const Status count = checkPartitionCount(tetCount, numberOfPartitions);
+  if (!count.ok() || numberOfPartitions == 1)
   {
-    return Status::failure(ErrorKind::InvalidOption, "the number of partitions must be at least 1");
-  }
-  if (numberOfPartitions > 1 && numberOfPartitions > tetCount)
-  {
-    return Status::failure(ErrorKind::InvalidOption, "more partitions than tets");
-  }
-  if (numberOfPartitions == 1)
-  {
-    return Status::success();
+    return count;
   }
 
   // Centroids (times 4) on one cubic grid over the tets' bounding box, so that the curve keeps

@@ -270,11 +270,8 @@ Status partitionHierarchically(const DualGraph& graph, int parts,
 
 } // namespace
 
-Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell,
-  const PartitioningOptions& options)
+Status checkPartitionCount(CellId tetCount, int numberOfPartitions)
 {
-  const CellId tetCount = mesh.numberOfTets();
-  partitionOfCell.assign(tetCount, 0);
   if (numberOfPartitions < 1)
   {
     return Status::failure(ErrorKind::InvalidOption, "the number of partitions must be at least 1");
@@ -283,9 +280,18 @@ Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<in
   {
     return Status::failure(ErrorKind::InvalidOption, "more partitions than tets");
   }
-  if (numberOfPartitions == 1)
+  return Status::success();
+}
+
+Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell,
+  const PartitioningOptions& options)
+{
+  const CellId tetCount = mesh.numberOfTets();
+  partitionOfCell.assign(tetCount, 0);
+  const Status count = checkPartitionCount(tetCount, numberOfPartitions);
+  if (!count.ok() || numberOfPartitions == 1)
   {
-    return Status::success();
+    return count;
   }
   const DualGraph graph = buildDualGraph(mesh);
   if (numberOfPartitions >= options.hierarchicalFrom)

@@ -33,6 +33,9 @@ struct PartitioningOptions
   int hierarchicalFrom = 4096;
 };
 
+// A partition count a mesh of `tetCount` tets can be cut into: at least 1, at most one per tet.
+Status checkPartitionCount(CellId tetCount, int numberOfPartitions);
+
 // Assigns every tet a partition in [0, numberOfPartitions). Deterministic: METIS runs with a
 // fixed seed on graphs built in a fixed order.
 Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell,
