@@ -54,13 +54,15 @@ TetLocator::TetLocator(const std::vector<Tet>& tets, CoordinatesOf coordinatesOf
     const double extent = high[axis] - this->Low[axis];
     this->CellSize[axis] = extent > 0 ? extent / this->Resolution : 1.0;
   }
-  this->Buckets.resize(
-    static_cast<std::size_t>(this->Resolution) * this->Resolution * this->Resolution);
   auto clampIndex = [this](double value)
   {
     return std::max(0, std::min(this->Resolution - 1, static_cast<int>(std::floor(value))));
   };
-  for (std::size_t t = 0; t < count; ++t)
+  // Buckets in compressed rows (count, then fill): one allocation instead of one per grid cell.
+  const std::size_t cellCount =
+    static_cast<std::size_t>(this->Resolution) * this->Resolution * this->Resolution;
+  this->BucketOffsets.assign(cellCount + 1, 0);
+  auto forEachCellOf = [&](std::size_t t, auto&& visit)
   {
     const double* box = this->Boxes.data() + 6 * t;
     int first[3], last[3];
@@ -75,11 +77,24 @@ TetLocator::TetLocator(const std::vector<Tet>& tets, CoordinatesOf coordinatesOf
       {
         for (int i = first[0]; i <= last[0]; ++i)
         {
-          this->Buckets[(static_cast<std::size_t>(k) * this->Resolution + j) * this->Resolution + i]
-            .push_back(t);
+          visit((static_cast<std::size_t>(k) * this->Resolution + j) * this->Resolution + i);
         }
       }
     }
+  };
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    forEachCellOf(t, [this](std::size_t cell) { ++this->BucketOffsets[cell + 1]; });
+  }
+  for (std::size_t cell = 0; cell < cellCount; ++cell)
+  {
+    this->BucketOffsets[cell + 1] += this->BucketOffsets[cell];
+  }
+  this->BucketTets.resize(this->BucketOffsets[cellCount]);
+  std::vector<std::size_t> next(this->BucketOffsets.begin(), this->BucketOffsets.end() - 1);
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    forEachCellOf(t, [&](std::size_t cell) { this->BucketTets[next[cell]++] = t; });
   }
 }
 
@@ -124,16 +139,12 @@ std::array<double, 4> TetLocator::barycentric(std::size_t tet, const double* poi
 }
 
 TetLocator::Location TetLocator::bestAmong(
-  const double* point, const std::vector<std::size_t>& candidates) const
+  const double* point, const std::size_t* first, const std::size_t* last) const
 {
   Location best;
   double bestMinimum = -std::numeric_limits<double>::max();
-  for (std::size_t tet : candidates)
+  auto consider = [&](std::size_t tet)
   {
-    if (bestMinimum > -1e-12 && !this->mayContain(tet, point))
-    {
-      continue; // cheap rejection once a near-containing tet is known
-    }
     const auto weights = this->barycentric(tet, point);
     const double minimum = *std::min_element(weights.begin(), weights.end());
     if (minimum > bestMinimum)
@@ -141,10 +152,24 @@ TetLocator::Location TetLocator::bestAmong(
       bestMinimum = minimum;
       best.tet = tet;
       best.barycentric = weights;
-      if (minimum >= 0)
-      {
-        break; // inside (or on the boundary of) this tet: no other can do better than tie
-      }
+    }
+    return minimum >= 0; // inside (or on the boundary of) this tet: no other can do better
+  };
+  // A containing tet's bounding box holds the point, so the cheap box test leaves the few
+  // candidates worth the four volumes; only a point a rounding error outside every tet needs
+  // all of them.
+  for (const std::size_t* tet = first; tet != last; ++tet)
+  {
+    if (this->mayContain(*tet, point) && consider(*tet))
+    {
+      return best;
+    }
+  }
+  for (const std::size_t* tet = first; tet != last; ++tet)
+  {
+    if (!this->mayContain(*tet, point) && consider(*tet))
+    {
+      return best;
     }
   }
   return best;
@@ -152,18 +177,20 @@ TetLocator::Location TetLocator::bestAmong(
 
 TetLocator::Location TetLocator::locate(const double* point) const
 {
-  const auto& candidates = this->Buckets[this->cellIndex(point)];
-  Location location = this->bestAmong(point, candidates);
+  const std::size_t cell = this->cellIndex(point);
+  const std::size_t* first = this->BucketTets.data() + this->BucketOffsets[cell];
+  const std::size_t* last = this->BucketTets.data() + this->BucketOffsets[cell + 1];
+  Location location = this->bestAmong(point, first, last);
   const double minimum =
     *std::min_element(location.barycentric.begin(), location.barycentric.end());
-  if (candidates.empty() || minimum < -1e-9)
+  if (first == last || minimum < -1e-9)
   {
     std::vector<std::size_t> all(this->Volumes6.size());
     for (std::size_t t = 0; t < all.size(); ++t)
     {
       all[t] = t;
     }
-    location = this->bestAmong(point, all);
+    location = this->bestAmong(point, all.data(), all.data() + all.size());
   }
   return location;
 }

@@ -30,7 +30,7 @@ public:
   Location locate(const double* point) const;
 
 private:
-  Location bestAmong(const double* point, const std::vector<std::size_t>& candidates) const;
+  Location bestAmong(const double* point, const std::size_t* first, const std::size_t* last) const;
   std::array<double, 4> barycentric(std::size_t tet, const double* point) const;
   bool mayContain(std::size_t tet, const double* point) const; // bounding-box test
   std::size_t cellIndex(const double* point) const;
@@ -42,7 +42,9 @@ private:
   std::vector<double> Volumes6;
   double Low[3], CellSize[3];
   int Resolution = 1;
-  std::vector<std::vector<std::size_t>> Buckets; // tets whose bounding box meets each grid cell
+  // The tets whose bounding box meets grid cell c: BucketTets[BucketOffsets[c] .. [c + 1]).
+  std::vector<std::size_t> BucketOffsets;
+  std::vector<std::size_t> BucketTets;
 };
 
 } // namespace cgmesh

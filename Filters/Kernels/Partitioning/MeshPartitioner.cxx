@@ -17,48 +17,97 @@ namespace cgmesh
 
 DualGraph buildDualGraph(const TetMesh& mesh)
 {
+  // Faces grouped by their smallest corner (a counting sort, linear in the mesh), then matched
+  // inside each small group: no global sort of 4n faces.
   struct FaceOfTet
   {
-    std::array<PointId, 3> corners;
+    PointId second, third; // the other two corners, ascending
     CellId tet;
+    bool operator<(const FaceOfTet& other) const
+    {
+      return std::tie(second, third, tet) < std::tie(other.second, other.third, other.tet);
+    }
   };
-  std::vector<FaceOfTet> faces;
-  faces.reserve(4 * mesh.tets.size());
-  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  PointId pointCount = 0;
+  for (const Tet& tet : mesh.tets)
+  {
+    pointCount = std::max(pointCount, *std::max_element(tet.begin(), tet.end()) + 1);
+  }
+  std::vector<std::int64_t> groupStart(static_cast<std::size_t>(pointCount) + 1, 0);
+  for (const Tet& tet : mesh.tets)
   {
     for (int skip = 0; skip < 4; ++skip)
     {
-      faces.push_back({ sortedFace(mesh.tets[t].data(), skip), t });
+      ++groupStart[sortedFace(tet.data(), skip)[0] + 1];
     }
   }
-  std::sort(faces.begin(), faces.end(),
-    [](const FaceOfTet& a, const FaceOfTet& b)
-    { return std::tie(a.corners, a.tet) < std::tie(b.corners, b.tet); });
-
-  std::vector<std::pair<CellId, CellId>> adjacency;
-  adjacency.reserve(faces.size());
-  for (std::size_t i = 0; i + 1 < faces.size(); ++i)
+  for (PointId p = 0; p < pointCount; ++p)
   {
-    if (faces[i].corners == faces[i + 1].corners && faces[i].tet != faces[i + 1].tet)
+    groupStart[p + 1] += groupStart[p];
+  }
+  std::vector<FaceOfTet> faces(4 * mesh.tets.size());
+  {
+    std::vector<std::int64_t> next(groupStart.begin(), groupStart.end() - 1);
+    for (CellId t = 0; t < mesh.numberOfTets(); ++t)
     {
-      adjacency.emplace_back(faces[i].tet, faces[i + 1].tet);
-      adjacency.emplace_back(faces[i + 1].tet, faces[i].tet);
+      for (int skip = 0; skip < 4; ++skip)
+      {
+        const auto face = sortedFace(mesh.tets[t].data(), skip);
+        faces[next[face[0]]++] = { face[1], face[2], t };
+      }
     }
   }
-  std::sort(adjacency.begin(), adjacency.end());
-  adjacency.erase(std::unique(adjacency.begin(), adjacency.end()), adjacency.end());
+
+  // Each tet has at most four face neighbours: fixed slots, -1 when empty. Only a face shared by
+  // three tets (invalid input) could ask for a fifth; such a pair is left out on both sides, so
+  // the graph stays symmetric as METIS requires.
+  std::vector<std::array<CellId, 4>> neighbours(mesh.tets.size(), { -1, -1, -1, -1 });
+  auto freeSlot = [&](CellId tet, CellId other) -> CellId*
+  {
+    for (CellId& slot : neighbours[tet])
+    {
+      if (slot < 0 || slot == other)
+      {
+        return &slot;
+      }
+    }
+    return nullptr;
+  };
+  auto addPair = [&](CellId a, CellId b)
+  {
+    CellId* slotOfA = freeSlot(a, b);
+    CellId* slotOfB = freeSlot(b, a);
+    if (slotOfA && slotOfB)
+    {
+      *slotOfA = b;
+      *slotOfB = a;
+    }
+  };
+  for (PointId p = 0; p < pointCount; ++p)
+  {
+    const auto first = faces.begin() + groupStart[p];
+    const auto last = faces.begin() + groupStart[p + 1];
+    std::sort(first, last);
+    for (auto face = first; face != last && face + 1 != last; ++face)
+    {
+      const auto next = face + 1;
+      if (face->second == next->second && face->third == next->third && face->tet != next->tet)
+      {
+        addPair(face->tet, next->tet);
+      }
+    }
+  }
 
   DualGraph graph;
   graph.offsets.assign(mesh.tets.size() + 1, 0);
-  graph.neighbours.reserve(adjacency.size());
-  for (const auto& pair : adjacency)
+  graph.neighbours.reserve(4 * mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
   {
-    ++graph.offsets[pair.first + 1];
-    graph.neighbours.push_back(pair.second);
-  }
-  for (std::size_t i = 0; i < mesh.tets.size(); ++i)
-  {
-    graph.offsets[i + 1] += graph.offsets[i];
+    auto& slots = neighbours[t];
+    const auto end = std::find(slots.begin(), slots.end(), CellId(-1));
+    std::sort(slots.begin(), end); // ascending, as METIS' input must be reproducible
+    graph.neighbours.insert(graph.neighbours.end(), slots.begin(), end);
+    graph.offsets[t + 1] = static_cast<std::int64_t>(graph.neighbours.size());
   }
   return graph;
 }
