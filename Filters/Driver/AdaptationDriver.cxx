@@ -64,7 +64,9 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   reporter.enter(Phase::Partition);
   int partitions = plan.partitions;
   PartitioningOptions partitioning;
-  partitioning.contiguous = options.method == RefinementMethod::Delaunay;
+  // Connected parts cost METIS about half its time for nothing measurable: 0.03% more tets on
+  // the Delaunay Big cube without them, 1.3 s less partitioning on the 844k-tet FinFET.
+  partitioning.contiguous = false;
   Status status = Status::success();
   if (options.partitionByRegion)
   {
