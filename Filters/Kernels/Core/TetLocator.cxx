@@ -1,5 +1,6 @@
 #include "Core/TetLocator.h"
 
+#include "Core/FaceKey.h"
 #include "Core/Geometry.h"
 
 #include <algorithm>
@@ -193,6 +194,57 @@ TetLocator::Location TetLocator::locate(const double* point) const
     location = this->bestAmong(point, all.data(), all.data() + all.size());
   }
   return location;
+}
+
+void TetLocator::buildFaceNeighbours(const std::vector<Tet>& tets)
+{
+  this->FaceNeighbours.assign(4 * tets.size(), -1);
+  auto opposite = [&tets](std::size_t tet, const std::array<PointId, 3>& face)
+  {
+    int corner = 0;
+    while (std::find(face.begin(), face.end(), tets[tet][corner]) != face.end())
+    {
+      ++corner;
+    }
+    return corner;
+  };
+  forEachDistinctFace(tets.empty() ? nullptr : tets[0].data(), tets.size(),
+    [&](
+      const std::array<PointId, 3>& face, std::size_t first, std::size_t second, std::size_t count)
+    {
+      if (count == 2)
+      {
+        this->FaceNeighbours[4 * first + opposite(first, face)] = static_cast<std::int64_t>(second);
+        this->FaceNeighbours[4 * second + opposite(second, face)] =
+          static_cast<std::int64_t>(first);
+      }
+    });
+}
+
+TetLocator::Location TetLocator::locateFrom(const double* point, std::size_t start) const
+{
+  // Enough for a point a few tets away; a visibility walk can also circle on degenerate input.
+  constexpr int MaximumSteps = 64;
+  std::size_t tet = start;
+  for (int step = 0; step < MaximumSteps; ++step)
+  {
+    const auto weights = this->barycentric(tet, point);
+    const auto lowest = std::min_element(weights.begin(), weights.end());
+    if (*lowest >= 0)
+    {
+      Location location;
+      location.tet = tet;
+      location.barycentric = weights;
+      return location;
+    }
+    const std::int64_t next = this->FaceNeighbours[4 * tet + (lowest - weights.begin())];
+    if (next < 0)
+    {
+      break;
+    }
+    tet = static_cast<std::size_t>(next);
+  }
+  return this->locate(point);
 }
 
 } // namespace cgmesh

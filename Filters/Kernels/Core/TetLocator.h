@@ -6,6 +6,7 @@
 #include "Core/TetMesh.h"
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -29,6 +30,15 @@ public:
   // for a point a rounding error outside every tet, the nearest one in that sense.
   Location locate(const double* point) const;
 
+  // Face neighbours for locateFrom(): one hashing pass over `tets`, those of the constructor.
+  void buildFaceNeighbours(const std::vector<Tet>& tets);
+
+  // A tet containing `point`, found by walking from tet `start` towards it across the face
+  // opposite the most negative barycentric coordinate: a few steps for a point near `start`,
+  // where a graded mesh fills the grid buckets with large tets. A walk that leaves the mesh or
+  // goes on too long ends in locate(). Needs buildFaceNeighbours().
+  Location locateFrom(const double* point, std::size_t start) const;
+
 private:
   Location bestAmong(const double* point, const std::size_t* first, const std::size_t* last) const;
   std::array<double, 4> barycentric(std::size_t tet, const double* point) const;
@@ -45,6 +55,7 @@ private:
   // The tets whose bounding box meets grid cell c: BucketTets[BucketOffsets[c] .. [c + 1]).
   std::vector<std::size_t> BucketOffsets;
   std::vector<std::size_t> BucketTets;
+  std::vector<std::int64_t> FaceNeighbours; // 4 per tet, across the face opposite corner k; -1
 };
 
 } // namespace cgmesh

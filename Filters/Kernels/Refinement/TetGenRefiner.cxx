@@ -38,6 +38,7 @@ struct LocalNumbering
 {
   std::vector<PointId> idOfLocal;
   std::unordered_map<PointId, int> localOfId;
+  std::vector<std::size_t> tetOfLocal; // a partition tet with that point: where walks start
 };
 
 class TetGenSession
@@ -68,6 +69,8 @@ public:
               .second)
         {
           this->Numbering.idOfLocal.push_back(p);
+          this->Numbering.tetOfLocal.push_back(
+            static_cast<std::size_t>(&tet - this->Partition.tets.data()));
         }
       }
     }
@@ -232,16 +235,19 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
   PartitionRefinement& refinement, DelaunayOutcome& outcome) const
 {
   const int inputPointCount = static_cast<int>(this->Numbering.idOfLocal.size());
-  const TetLocator locator(
-    this->Partition.tets, [this](PointId id) { return this->coordinatesOf(id); });
+  TetLocator locator(this->Partition.tets, [this](PointId id) { return this->coordinatesOf(id); });
+  locator.buildFaceNeighbours(this->Partition.tets);
 
   // New points first: their ids are needed for the tets. Placing reads the old tets, whose
   // coordinates live in refinement.newCoordinates, so collect the additions before appending.
   std::vector<PointId> idOfOutput(this->Numbering.idOfLocal);
+  std::vector<std::size_t> tetOfOutput(this->Numbering.tetOfLocal);
   std::vector<PointSource> sources;
   for (int i = inputPointCount; i < out.numberofpoints; ++i)
   {
-    const TetLocator::Location where = locator.locate(out.pointlist + 3 * i);
+    // TetGen inserts points near the ones before them, often in the same old tet.
+    const TetLocator::Location where =
+      locator.locateFrom(out.pointlist + 3 * i, tetOfOutput.back());
     PointSource source;
     for (int k = 0; k < 4; ++k)
     {
@@ -250,6 +256,7 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
     }
     sources.push_back(source);
     idOfOutput.push_back(-static_cast<PointId>(refinement.newPointSources.size() + sources.size()));
+    tetOfOutput.push_back(where.tet);
   }
 
   PartitionMesh refined;
@@ -267,7 +274,9 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
     }
     refined.tets.push_back(
       { idOfOutput[c[0]], idOfOutput[c[1]], idOfOutput[c[2]], idOfOutput[c[3]] });
-    refined.parentCells.push_back(this->Partition.parentCells[locator.locate(centroid).tet]);
+    // The centroid lies a step or two from the old tet that holds the tet's first corner.
+    refined.parentCells.push_back(
+      this->Partition.parentCells[locator.locateFrom(centroid, tetOfOutput[c[0]]).tet]);
     if (!this->Partition.regions.empty())
     {
       refined.regions.push_back(static_cast<int>(std::lround(out.tetrahedronattributelist[t])));
