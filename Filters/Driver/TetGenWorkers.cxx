@@ -89,19 +89,32 @@ bool receiveArray(int socket, T*& values, std::int64_t& count)
   return receiveAll(socket, values, sizeof(T) * static_cast<std::size_t>(count));
 }
 
-bool sendMesh(int socket, const tetgenio& io, bool withFaces)
+// The header's last entry says what follows the tets and their attributes.
+enum MeshParts : int
 {
+  WithFaces = 1,     // the faces and their markers (a request)
+  WithNeighbours = 2 // the face neighbours of each tet (a reply to TetGen's switch n)
+};
+
+bool sendMesh(int socket, const tetgenio& io, int parts)
+{
+  if (io.neighborlist == nullptr)
+  {
+    parts &= ~WithNeighbours;
+  }
   const int header[4] = { io.numberofcorners, io.numberoftetrahedronattributes, io.firstnumber,
-    withFaces ? 1 : 0 };
+    parts };
   return sendAll(socket, header, sizeof(header)) &&
     sendArray(socket, io.pointlist, 3 * static_cast<std::int64_t>(io.numberofpoints)) &&
     sendArray(
       socket, io.tetrahedronlist, std::int64_t(io.numberofcorners) * io.numberoftetrahedra) &&
     sendArray(socket, io.tetrahedronattributelist,
       std::int64_t(io.numberoftetrahedronattributes) * io.numberoftetrahedra) &&
-    (!withFaces ||
+    (!(parts & WithFaces) ||
       (sendArray(socket, io.trifacelist, 3 * static_cast<std::int64_t>(io.numberoftrifaces)) &&
-        sendArray(socket, io.trifacemarkerlist, static_cast<std::int64_t>(io.numberoftrifaces))));
+        sendArray(socket, io.trifacemarkerlist, static_cast<std::int64_t>(io.numberoftrifaces)))) &&
+    (!(parts & WithNeighbours) ||
+      sendArray(socket, io.neighborlist, 4 * static_cast<std::int64_t>(io.numberoftetrahedra)));
 }
 
 bool receiveMesh(int socket, tetgenio& io)
@@ -115,6 +128,7 @@ bool receiveMesh(int socket, tetgenio& io)
   io.numberofcorners = header[0];
   io.numberoftetrahedronattributes = header[1];
   io.firstnumber = header[2];
+  const int parts = header[3];
   if (!receiveArray(socket, io.pointlist, count))
   {
     return false;
@@ -129,16 +143,27 @@ bool receiveMesh(int socket, tetgenio& io)
   {
     return false;
   }
-  if (header[3] == 0)
+  if (parts & WithFaces)
   {
-    return true;
+    if (!receiveArray(socket, io.trifacelist, count))
+    {
+      return false;
+    }
+    io.numberoftrifaces = static_cast<int>(count / 3);
+    if (!receiveArray(socket, io.trifacemarkerlist, count))
+    {
+      return false;
+    }
   }
-  if (!receiveArray(socket, io.trifacelist, count))
+  if (parts & WithNeighbours)
   {
-    return false;
+    if (!receiveArray(socket, io.neighborlist, count) ||
+      count != 4 * std::int64_t(io.numberoftetrahedra))
+    {
+      return false;
+    }
   }
-  io.numberoftrifaces = static_cast<int>(count / 3);
-  return receiveArray(socket, io.trifacemarkerlist, count);
+  return true;
 }
 
 // A request starts with what the worker is to do with it.
@@ -189,7 +214,7 @@ enum RequestKind : std::int32_t
     delete[] switches;
     const std::int32_t ok = failure.empty() ? 1 : 0;
     const bool answered = sendAll(socket, &ok, sizeof(ok)) &&
-      (ok ? sendMesh(socket, out, false)
+      (ok ? sendMesh(socket, out, WithNeighbours)
           : sendArray(socket, failure.data(), static_cast<std::int64_t>(failure.size())));
     if (!answered)
     {
@@ -345,7 +370,7 @@ std::string TetGenWorkerPool::run(
   errno = 0;
   const bool exchanged = sendAll(worker.socket, &kind, sizeof(kind)) &&
     sendArray(worker.socket, switches.c_str(), static_cast<std::int64_t>(switches.size() + 1)) &&
-    sendMesh(worker.socket, in, true) && receiveAll(worker.socket, &ok, sizeof(ok));
+    sendMesh(worker.socket, in, WithFaces) && receiveAll(worker.socket, &ok, sizeof(ok));
   if (exchanged && ok)
   {
     if (receiveMesh(worker.socket, out))

@@ -4,10 +4,15 @@
 #include "AdaptationDriver.h"
 #include "Core/Geometry.h"
 #include "CubeGenerator.h"
+#include "Refinement/TemplateTable.h"
+#include "Refinement/TetGenRefiner.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
 #include "TetGenWorkers.h"
 #include "Validation/MeshValidation.h"
+
+#define TETLIBRARY
+#include <tetgen.h>
 
 #include <algorithm>
 #include <array>
@@ -302,6 +307,90 @@ void test_bad_delaunay_options_are_refused()
   CHECK(!adaptMesh(input, options, result).ok());
 }
 
+// TetGen's reply is checked, not trusted: face neighbours that do not name each other back, or
+// an interior face reported as hull, send the partition to the template fallback with the reason.
+void test_tampered_tetgen_output_is_refused()
+{
+  TetMesh mesh;
+  CHECK(generateKuhnCube(3, mesh).ok());
+  const TemplateTable templates;
+  const std::vector<char> interfaceVertex(mesh.numberOfPoints(), 0);
+  const DelaunayParameters parameters{ 0.05 * (1.0 / mesh.numberOfTets()), 2.0, false };
+  RefinementContext context;
+  context.coordinates = &mesh.coordinates;
+  context.interfaceVertex = &interfaceVertex;
+  context.templates = &templates;
+  const double interfaceLength = interfaceEdgeLengthForVolume(parameters.maximumVolume);
+  context.squaredThreshold = interfaceLength * interfaceLength;
+  TetGenWorkerPool pool(1);
+
+  auto refineWith = [&](const std::function<void(tetgenio&)>& tamper)
+  {
+    PartitionMesh partition;
+    partition.tets = mesh.tets;
+    for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+    {
+      partition.parentCells.push_back(t);
+    }
+    PartitionRefinement refinement;
+    DelaunayOutcome outcome;
+    const TetGenRunner runner = [&](const tetgenio& in, const std::string& switches, tetgenio& out)
+    {
+      const std::string failure = pool.run(0, in, switches, out);
+      if (failure.empty() && out.neighborlist)
+      {
+        tamper(out);
+      }
+      return failure;
+    };
+    CHECK(refinePartitionDelaunay(
+      partition, context, EdgeMidpointMap(), parameters, runner, refinement, outcome)
+            .ok());
+    return outcome;
+  };
+
+  const DelaunayOutcome untouched = refineWith([](tetgenio&) {});
+  CHECK(!untouched.fellBack);
+  CHECK(untouched.tetgenPoints > 0);
+
+  // Tet 0 names a tet that does not name it back.
+  const DelaunayOutcome oneSided = refineWith(
+    [](tetgenio& out)
+    {
+      for (int slot = 0; slot < 4; ++slot)
+      {
+        const int n = out.neighborlist[slot];
+        if (n >= 0)
+        {
+          int* back = out.neighborlist + 4 * n;
+          std::replace(back, back + 4, 0, -1);
+          break;
+        }
+      }
+    });
+  CHECK(oneSided.fellBack);
+  CHECK(oneSided.reason.find("inconsistent face neighbours") != std::string::npos);
+
+  // An interior face reported as hull on both sides: the boundary no longer matches.
+  const DelaunayOutcome opened = refineWith(
+    [](tetgenio& out)
+    {
+      for (int slot = 0; slot < 4; ++slot)
+      {
+        const int n = out.neighborlist[slot];
+        if (n >= 0)
+        {
+          out.neighborlist[slot] = -1;
+          int* back = out.neighborlist + 4 * n;
+          std::replace(back, back + 4, 0, -1);
+          break;
+        }
+      }
+    });
+  CHECK(opened.fellBack);
+  CHECK(opened.reason.find("changed the partition boundary") != std::string::npos);
+}
+
 } // namespace
 
 int main()
@@ -312,5 +401,6 @@ int main()
   test_failed_partitions_fall_back_to_templates();
   test_worker_deaths_fall_back_like_failures();
   test_bad_delaunay_options_are_refused();
+  test_tampered_tetgen_output_is_refused();
   return cgmesh_test::finish("TestDelaunay");
 }

@@ -148,21 +148,69 @@ std::map<int, double> regionVolumes(const tetgenio& io)
   return volumes;
 }
 
-// The faces TetGen must have kept: hull faces and faces between two attributes, sorted.
-std::vector<std::array<int, 3>> hullAndInterfaceFaces(const tetgenio& io)
+// The hull faces and the faces between two attributes of TetGen's output, sorted, from the face
+// neighbours it returned (switch n), each checked rather than trusted: a neighbour must be another
+// tet sharing exactly one face with this one, through no face claimed twice, and must name this
+// tet back. Empty when a check fails. Linear in the output and free of hashing, which matters:
+// the output is 20 times the size of the faces it is compared against.
+bool keptFacesOfOutput(const tetgenio& io, std::vector<std::array<int, 3>>& kept)
 {
-  std::vector<std::array<int, 3>> kept;
-  forEachDistinctFace(io.tetrahedronlist, static_cast<std::size_t>(io.numberoftetrahedra),
-    [&](const std::array<int, 3>& face, std::size_t first, std::size_t second, std::size_t count)
+  if (io.neighborlist == nullptr)
+  {
+    return false;
+  }
+  kept.clear();
+  const int count = io.numberoftetrahedra;
+  for (int t = 0; t < count; ++t)
+  {
+    const int* corners = io.tetrahedronlist + 4 * t;
+    const int* neighbours = io.neighborlist + 4 * t;
+    int sharedFaces = 0; // bit k: the face opposite corner k has a neighbour
+    for (int slot = 0; slot < 4; ++slot)
     {
-      if (count == 1 ||
-        (count == 2 && io.tetrahedronattributelist[first] != io.tetrahedronattributelist[second]))
+      const int n = neighbours[slot];
+      if (n == -1)
       {
-        kept.push_back(face);
+        continue;
       }
-    });
+      if (n < 0 || n >= count || n == t)
+      {
+        return false;
+      }
+      const int* other = io.tetrahedronlist + 4 * n;
+      int missing = -1, common = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        if (std::find(other, other + 4, corners[k]) != other + 4)
+        {
+          ++common;
+        }
+        else
+        {
+          missing = k;
+        }
+      }
+      const int* back = io.neighborlist + 4 * n;
+      if (common != 3 || (sharedFaces & (1 << missing)) || std::find(back, back + 4, t) == back + 4)
+      {
+        return false;
+      }
+      sharedFaces |= 1 << missing;
+      if (t < n && io.tetrahedronattributelist[t] != io.tetrahedronattributelist[n])
+      {
+        kept.push_back(sortedFace(corners, missing));
+      }
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      if (!(sharedFaces & (1 << k)))
+      {
+        kept.push_back(sortedFace(corners, k));
+      }
+    }
+  }
   std::sort(kept.begin(), kept.end());
-  return kept;
+  return true;
 }
 
 std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) const
@@ -209,7 +257,12 @@ std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) con
       return "TetGen returned a tetrahedron with an edge of rounding-noise length";
     }
   }
-  if (hullAndInterfaceFaces(out) != this->KeptFaces)
+  std::vector<std::array<int, 3>> keptInOutput;
+  if (!keptFacesOfOutput(out, keptInOutput))
+  {
+    return "TetGen returned inconsistent face neighbours";
+  }
+  if (keptInOutput != this->KeptFaces)
   {
     return "TetGen changed the partition boundary or a material interface";
   }
@@ -293,9 +346,9 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
 std::string tetgenSwitches(const DelaunayParameters& parameters)
 {
   // r: refine the given mesh; Y: keep the given boundary and interface faces; M: do not merge
-  // coplanar facets; Q: quiet.
+  // coplanar facets; Q: quiet; n: return the face neighbours (for validation).
   char switches[128];
-  std::snprintf(switches, sizeof(switches), "rYMQq%.17ga%.17g", parameters.radiusEdgeRatio,
+  std::snprintf(switches, sizeof(switches), "rYMQnq%.17ga%.17g", parameters.radiusEdgeRatio,
     parameters.maximumVolume);
   return switches;
 }
