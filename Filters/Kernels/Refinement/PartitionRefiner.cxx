@@ -199,7 +199,8 @@ std::int64_t predictTemplateTetCount(
 }
 
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, PartitionRefinement& refinement, const EdgeFilter& filter)
+  const EdgeMidpointMap& received, PartitionRefinement& refinement, const EdgeFilter& filter,
+  std::vector<std::size_t>* origins)
 {
   try
   {
@@ -209,6 +210,10 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
     PartitionMesh refined;
     refined.tets.reserve(partition.tets.size() * 2);
     refined.parentCells.reserve(partition.tets.size() * 2);
+    if (origins)
+    {
+      origins->clear();
+    }
 
     for (std::size_t t = 0; t < partition.tets.size(); ++t)
     {
@@ -237,6 +242,10 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       if (splitMask == 0)
       {
         emit(tet);
+        if (origins)
+        {
+          origins->push_back(t);
+        }
         continue;
       }
       const std::vector<LocalTet>& children = splitMask == 63
@@ -245,6 +254,10 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       for (const LocalTet& child : children)
       {
         emit({ vertices[child[0]], vertices[child[1]], vertices[child[2]], vertices[child[3]] });
+      }
+      if (origins)
+      {
+        origins->insert(origins->end(), children.size(), t);
       }
     }
     partition = std::move(refined);

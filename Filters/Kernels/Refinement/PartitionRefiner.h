@@ -71,10 +71,11 @@ std::vector<char> findInterfaceVertices(
   const std::vector<PartitionMesh>& partitions, PointId numberOfPoints);
 
 // Refines `partition` in place. The tets' corners are global ids; the result may reference
-// provisional ids (see above).
+// provisional ids (see above). Each tet is replaced where it stands, by itself or by its children
+// one after another; with `origins`, each resulting tet's index in the partition before.
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
   const EdgeMidpointMap& received, PartitionRefinement& refinement,
-  const EdgeFilter& filter = EdgeFilter());
+  const EdgeFilter& filter = EdgeFilter(), std::vector<std::size_t>* origins = nullptr);
 
 // Rewrites provisional ids of the partition's tets, outbox and new point sources into global ids
 // starting at `firstGlobalId`.
