@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <map>
 #include <new>
+#include <numeric>
 #include <unordered_map>
 
 namespace cgmesh
@@ -32,6 +33,29 @@ void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges)
     edges.insert(EdgeKey::of(face[0], face[2]));
   }
 }
+
+// An order of a partition's n tets: the t-th tet handed to TetGen is tet sourceOf(t).
+struct TetOrder
+{
+  std::size_t count = 0;
+  std::size_t step = 1; // coprime to count: t -> (start + t * step) mod count is a permutation
+  std::size_t start = 0;
+
+  std::size_t sourceOf(std::size_t t) const { return (this->start + t * this->step) % this->count; }
+
+  static TetOrder forward(std::size_t n) { return { n, 1, 0 }; }
+  static TetOrder reversed(std::size_t n) { return { n, n - 1, n - 1 }; }
+  // Neighbouring tets far apart in the sequence: a step near n / golden ratio, made coprime.
+  static TetOrder strided(std::size_t n)
+  {
+    std::size_t step = std::max<std::size_t>(1, static_cast<std::size_t>(0.618 * n));
+    while (std::gcd(step, n) != 1)
+    {
+      ++step;
+    }
+    return { n, step, 0 };
+  }
+};
 
 // The partition renumbered 0..n-1 for TetGen, and the way back.
 struct LocalNumbering
@@ -58,8 +82,8 @@ public:
   }
 
   // Fills TetGen's input from the partition and the faces it must keep.
-  // `reversed` hands TetGen the tets in reverse order (a second attempt, see refineWithTetGen).
-  void prepareInput(tetgenio& in, const std::vector<Face>& keptFaces, bool reversed)
+  // `order` says in which order TetGen receives the tets (the attempts of refineWithTetGen).
+  void prepareInput(tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order)
   {
     for (const Tet& tet : this->Partition.tets)
     {
@@ -88,7 +112,7 @@ public:
     in.tetrahedronattributelist = new REAL[in.numberoftetrahedra];
     for (int t = 0; t < in.numberoftetrahedra; ++t)
     {
-      const std::size_t source = reversed ? in.numberoftetrahedra - 1 - t : t;
+      const std::size_t source = order.sourceOf(static_cast<std::size_t>(t));
       for (int k = 0; k < 4; ++k)
       {
         in.tetrahedronlist[4 * t + k] =
@@ -490,14 +514,17 @@ std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& 
     return "simulated TetGen failure";
   }
   // TetGen 1.5 aborts on some inputs with many coplanar and cospherical points (its symbolic
-  // perturbation asserts in insphere_s); the same tets in another order take other insertion
-  // paths, so a failed call is tried once more with the tets reversed before falling back.
+  // perturbation asserts in insphere_s), or flips a kept face among coplanar ones; the same tets
+  // in another order take other insertion paths, so a failed call is tried again with the tets
+  // reversed, then strided, before falling back.
   std::string failure;
-  for (const bool reversed : { false, true })
+  const std::size_t count = partition.tets.size();
+  for (const TetOrder order :
+    { TetOrder::forward(count), TetOrder::reversed(count), TetOrder::strided(count) })
   {
     TetGenSession session(partition, context, refinement);
     tetgenio in, out;
-    session.prepareInput(in, keptFaces, reversed);
+    session.prepareInput(in, keptFaces, order);
     failure = runTetGen(in, tetgenSwitches(parameters), out);
     if (failure.empty())
     {
