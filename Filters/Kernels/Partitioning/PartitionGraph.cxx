@@ -13,6 +13,9 @@ std::vector<std::pair<PointId, int>> collectExtraMemberships(const std::vector<T
   const std::vector<int>& partitionOfCell, std::vector<int>& firstPartition)
 {
   std::vector<std::pair<PointId, int>> extra;
+  // The partition last recorded as an extra one per point: a point's tets in one partition mostly
+  // come one after another, so this keeps most repeats out of the sort below.
+  std::vector<int> lastExtra(firstPartition.size(), -1);
   for (std::size_t t = 0; t < tets.size(); ++t)
   {
     const int partition = partitionOfCell[t];
@@ -22,9 +25,10 @@ std::vector<std::pair<PointId, int>> collectExtraMemberships(const std::vector<T
       {
         firstPartition[p] = partition;
       }
-      else if (firstPartition[p] != partition)
+      else if (firstPartition[p] != partition && lastExtra[p] != partition)
       {
         extra.emplace_back(p, partition);
+        lastExtra[p] = partition;
       }
     }
   }
