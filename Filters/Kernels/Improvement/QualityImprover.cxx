@@ -1,6 +1,7 @@
 #include "Improvement/QualityImprover.h"
 
 #include "Core/ConstrainedFaces.h"
+#include "Core/EdgeSplits.h"
 #include "Core/TetQuality.h"
 
 #include <algorithm>
@@ -637,23 +638,23 @@ void Improver::writeBack(std::vector<PointId>& movedPoints)
 std::vector<char> neighbourhoodOfPoorTets(
   const PartitionMesh& partition, const std::vector<char>& poor)
 {
-  std::vector<PointId> poorVertices;
+  PointIdSet poorVertices;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     if (poor[t])
     {
-      poorVertices.insert(poorVertices.end(), partition.tets[t].begin(), partition.tets[t].end());
+      for (PointId p : partition.tets[t])
+      {
+        poorVertices.emplace(p, 0);
+      }
     }
   }
-  std::sort(poorVertices.begin(), poorVertices.end());
-  poorVertices.erase(std::unique(poorVertices.begin(), poorVertices.end()), poorVertices.end());
   std::vector<char> selected(partition.tets.size(), 0);
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
-    for (PointId p : partition.tets[t])
-    {
-      selected[t] = selected[t] || std::binary_search(poorVertices.begin(), poorVertices.end(), p);
-    }
+    const Tet& tet = partition.tets[t];
+    selected[t] = std::any_of(
+      tet.begin(), tet.end(), [&poorVertices](PointId p) { return poorVertices.contains(p); });
   }
   return selected;
 }
