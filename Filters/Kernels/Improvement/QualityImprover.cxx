@@ -63,7 +63,7 @@ private:
   PartitionMesh& Partition;
   const PartitionPoints& Points;
   std::vector<PointId> IdOf;
-  std::unordered_map<PointId, int> LocalOf;
+  FlatHashMap<PointId, int, PointIdHash, NoPoint> LocalOf;
   std::vector<Corners> Tets;
   std::vector<int> Regions;
   std::vector<CellId> Parents;
@@ -137,7 +137,7 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
     {
       for (PointId p : face)
       {
-        this->Fixed[this->LocalOf.at(p)] = 1;
+        this->Fixed[*this->LocalOf.find(p)] = 1;
       }
     }
   }
@@ -145,13 +145,14 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
 
 int Improver::localVertex(PointId id)
 {
-  const auto inserted = this->LocalOf.emplace(id, static_cast<int>(this->IdOf.size()));
-  if (inserted.second)
+  const int next = static_cast<int>(this->IdOf.size());
+  if (!this->LocalOf.emplace(id, next))
   {
-    this->IdOf.push_back(id);
-    this->Incident.emplace_back();
+    return *this->LocalOf.find(id);
   }
-  return inserted.first->second;
+  this->IdOf.push_back(id);
+  this->Incident.emplace_back();
+  return next;
 }
 
 void Improver::addTet(const Corners& corners, int region, CellId parent)
