@@ -1,6 +1,7 @@
 #include "Refinement/TetGenRefiner.h"
 
-#include "Core/ConstrainedFaces.h"
+#include "Refinement/ConstrainedEdgeSplits.h"
+
 #include "Core/FaceKey.h"
 #include "Core/Geometry.h"
 #include "Core/TetLocator.h"
@@ -20,19 +21,6 @@ namespace cgmesh
 {
 namespace
 {
-
-// Enough to halve an interface edge down from 2^8 times the interface length.
-constexpr int MaximumTemplateRounds = 8;
-
-void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges)
-{
-  for (const Face& face : faces)
-  {
-    edges.insert(EdgeKey::of(face[0], face[1]));
-    edges.insert(EdgeKey::of(face[1], face[2]));
-    edges.insert(EdgeKey::of(face[0], face[2]));
-  }
-}
 
 // An order of a partition's n tets: the t-th tet handed to TetGen is tet sourceOf(t).
 struct TetOrder
@@ -175,7 +163,7 @@ std::map<int, double> regionVolumes(const tetgenio& io)
 // The hull faces and the faces between two attributes of TetGen's output, sorted, from the face
 // neighbours it returned (switch n), each checked rather than trusted: a neighbour must be another
 // tet sharing exactly one face with this one, through no face claimed twice, and must name this
-// tet back. Empty when a check fails. Linear in the output and free of hashing, which matters:
+// tet back. False when a check fails. Linear in the output and free of hashing, which matters:
 // the output is 20 times the size of the faces it is compared against.
 bool keptFacesOfOutput(const tetgenio& io, std::vector<std::array<int, 3>>& kept)
 {
@@ -365,133 +353,6 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
     refinement.newPointSources.end(), sources.begin(), sources.end());
   outcome.tetgenPoints = out.numberofpoints - inputPointCount;
   partition = std::move(refined);
-}
-
-// Vertices of the faces, in a set.
-PointIdSet cornersOf(const std::vector<Face>& faces, const std::vector<Face>& moreFaces)
-{
-  PointIdSet corners;
-  corners.reserve(3 * (faces.size() + moreFaces.size()));
-  for (const auto* list : { &faces, &moreFaces })
-  {
-    for (const Face& face : *list)
-    {
-      for (PointId p : face)
-      {
-        corners.emplace(p, 0);
-      }
-    }
-  }
-  return corners;
-}
-
-// Splits the partition's boundary and material-interface edges by templates down to the interface
-// length, in rounds (a split edge's halves may still be too long); neighbours take the same
-// decisions on shared edges and heal them from the outbox, round by round. Leaves the faces TetGen
-// must keep, as they stand after the last round, in the two lists.
-//
-// Only the first round sees the whole partition. It leaves a core that later rounds cannot touch:
-// tets it did not split and that have no corner on a constrained face (a later constrained edge
-// has its ends on such corners or on new midpoints, never on a core corner). Later rounds refine
-// and search the rest, the shell, alone; its faces against the core, which count as boundary
-// there, are told apart by their corners, all of which are core corners, unlike any constrained
-// face's. The shell's tets then go back in their ancestors' places, so the result is the one of
-// rounds over the whole partition. On the FinFET the rounds go through half as many tets.
-Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, PartitionRefinement& refinement,
-  std::vector<Face>& boundaryFaces, std::vector<Face>& regionInterfaceFaces)
-{
-  findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
-  EdgeSet constrainedEdges;
-  addFaceEdges(boundaryFaces, constrainedEdges);
-  addFaceEdges(regionInterfaceFaces, constrainedEdges);
-  const std::size_t tetsBefore = partition.tets.size();
-  std::vector<std::size_t> origins;
-  Status status = refinePartition(
-    partition, context, received, refinement, EdgeFilter{ &constrainedEdges, true }, &origins);
-  if (!status.ok() || partition.tets.size() == tetsBefore)
-  {
-    return status; // nothing split: the faces found above are still the partition's
-  }
-
-  const PointIdSet constrainedCorners = cornersOf(boundaryFaces, regionInterfaceFaces);
-  const std::size_t count = partition.tets.size();
-  std::vector<char> inShell(count, 0);
-  PartitionMesh shell;
-  std::vector<std::size_t> ancestors; // per shell tet, its tet after the first round
-  PointIdSet coreCorners;
-  for (std::size_t t = 0; t < count; ++t)
-  {
-    const Tet& tet = partition.tets[t];
-    const bool splitChild =
-      (t > 0 && origins[t - 1] == origins[t]) || (t + 1 < count && origins[t + 1] == origins[t]);
-    inShell[t] = splitChild ||
-      std::any_of(
-        tet.begin(), tet.end(), [&](PointId p) { return constrainedCorners.contains(p); });
-    if (inShell[t])
-    {
-      appendTetOf(partition, t, shell);
-      ancestors.push_back(t);
-    }
-    else
-    {
-      for (PointId p : tet)
-      {
-        coreCorners.emplace(p, 0);
-      }
-    }
-  }
-  auto findShellFaces = [&]()
-  {
-    boundaryFaces.clear();
-    regionInterfaceFaces.clear();
-    findConstrainedFaces(shell, boundaryFaces, regionInterfaceFaces);
-    boundaryFaces.erase(std::remove_if(boundaryFaces.begin(), boundaryFaces.end(),
-                          [&](const Face& face) { return coreCorners.contains(face[0]); }),
-      boundaryFaces.end());
-  };
-  for (int round = 1; round < MaximumTemplateRounds; ++round)
-  {
-    findShellFaces();
-    constrainedEdges.clear();
-    addFaceEdges(boundaryFaces, constrainedEdges);
-    addFaceEdges(regionInterfaceFaces, constrainedEdges);
-    const std::size_t shellBefore = shell.tets.size();
-    status = refinePartition(
-      shell, context, received, refinement, EdgeFilter{ &constrainedEdges, true }, &origins);
-    if (!status.ok())
-    {
-      return status;
-    }
-    if (shell.tets.size() == shellBefore)
-    {
-      break; // the faces found above are still the shell's
-    }
-    for (std::size_t& origin : origins)
-    {
-      origin = ancestors[origin];
-    }
-    ancestors.swap(origins);
-    if (round + 1 == MaximumTemplateRounds)
-    {
-      findShellFaces();
-    }
-  }
-  PartitionMesh merged;
-  std::size_t next = 0;
-  for (std::size_t t = 0; t < count; ++t)
-  {
-    if (!inShell[t])
-    {
-      appendTetOf(partition, t, merged);
-    }
-    for (; next < ancestors.size() && ancestors[next] == t; ++next)
-    {
-      appendTetOf(shell, next, merged);
-    }
-  }
-  partition = std::move(merged);
-  return Status::success();
 }
 
 std::string tetgenSwitches(const DelaunayParameters& parameters)
