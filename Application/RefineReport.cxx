@@ -231,6 +231,7 @@ void collectFilterStatistics(
   statistics.numberOfPartitions = summary.plan.partitions;
   statistics.partitioner =
     vtkCoarseGrainedMeshAdaptation::PartitionerToName(static_cast<int>(summary.plan.partitioner));
+  statistics.materialLabelArrays = filter->GetMaterialLabelArrays();
   statistics.interfacePoints = summary.interfacePoints;
   statistics.numberOfThreads = summary.plan.threads;
   statistics.edgeLengthThreshold = summary.plan.edgeLengthThreshold;
@@ -282,8 +283,13 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
          << (statistics.partitionByRegion
                 ? " (by region, " + std::to_string(statistics.partitionsPerRegion) + " per region)"
                 : " (" + statistics.partitioner + ")")
-         << "\n"
-         << std::setw(24) << "interface points" << statistics.interfacePoints << "\n"
+         << "\n";
+  if (!statistics.materialLabelArrays.empty())
+  {
+    stream << std::setw(24) << "material labels" << statistics.materialLabelArrays
+           << " (integer cell arrays whose interfaces are kept; --region-array names one)\n";
+  }
+  stream << std::setw(24) << "interface points" << statistics.interfacePoints << "\n"
          << std::setw(24) << "coloring" << statistics.coloring << "\n"
          << std::setw(24) << "colors" << statistics.numberOfColors << "\n"
          << std::setw(24) << "partitions per color"
@@ -353,6 +359,7 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"colors\": " << statistics.numberOfColors << ",\n"
        << "  \"partitions\": " << statistics.numberOfPartitions << ",\n"
        << "  \"partitioner\": " << jsonString(statistics.partitioner) << ",\n"
+       << "  \"materialLabelArrays\": " << jsonString(statistics.materialLabelArrays) << ",\n"
        << "  \"interfacePoints\": " << statistics.interfacePoints << ",\n"
        << "  \"partitionByRegion\": " << (statistics.partitionByRegion ? "true" : "false") << ",\n"
        << "  \"partitionsPerRegion\": " << statistics.partitionsPerRegion << ",\n"
@@ -374,7 +381,6 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
          << "]},\n";
   }
   file << "  \"method\": " << jsonString(statistics.method) << ",\n"
-       << "  \"method\": " << jsonString(statistics.method) << ",\n"
        << "  \"edgeLengthThreshold\": " << statistics.edgeLengthThreshold << ",\n"
        << "  \"volumeBound\": " << statistics.volumeBound << ",\n"
        << "  \"tetgenPoints\": " << statistics.tetgenPoints << ",\n"

@@ -38,6 +38,7 @@ struct RefineStatistics
   int numberOfColors = 0;
   int numberOfPartitions = 0;
   std::string partitioner;
+  std::string materialLabelArrays;  // cell arrays kept as material labels (no region array named)
   std::int64_t interfacePoints = 0; // input points in tets of two or more partitions
   int numberOfThreads = 0;
   int numberOfIterations = 0;

@@ -1,5 +1,6 @@
 #include "vtkCoarseGrainedMeshAdaptation.h"
 
+#include "cgmeshMaterialLabels.h"
 #include "cgmeshTetQuality.h"
 #include "cgmeshVTKConversion.h"
 
@@ -354,6 +355,7 @@ public:
   double LastQualitySeconds = 0;
   double LastTotalSeconds = 0;
   bool HasRun = false;
+  std::string MaterialLabelArrays; // comma-separated, of the last run
 };
 
 //------------------------------------------------------------------------------
@@ -469,6 +471,12 @@ int vtkCoarseGrainedMeshAdaptation::PartitionerFromName(const char* name)
 }
 
 //------------------------------------------------------------------------------
+const char* vtkCoarseGrainedMeshAdaptation::GetMaterialLabelArrays() const
+{
+  return this->Internals->MaterialLabelArrays.c_str();
+}
+
+//------------------------------------------------------------------------------
 const char* vtkCoarseGrainedMeshAdaptation::MethodToName(int method)
 {
   return choiceName("Method", method);
@@ -515,6 +523,13 @@ bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
                   << " cells are of other types. Apply ParaView's Tetrahedralize filter first.");
     return false;
   }
+  if (!this->Internals->Parameters.refinementRegions.empty() &&
+    this->ResolveRegionArrayName(input).empty())
+  {
+    vtkErrorMacro(<< "RefinementRegions needs a region array (RegionArrayName): the region ids "
+                     "it lists are values of that array.");
+    return false;
+  }
   if (this->GetPartitionByRegion() && this->ResolveRegionArrayName(input).empty())
   {
     vtkErrorMacro(<< "PartitionByRegion needs a region array: set RegionArrayName to the cell "
@@ -544,12 +559,29 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   }
 
   cgmesh::TetMesh inputMesh;
-  cgmesh::Status status = cgmesh::convertToTetMesh(
-    input, this->ResolveRegionArrayName(input), inputMesh, this->ResolveSizeArrayName(input));
+  const std::string regionArrayName = this->ResolveRegionArrayName(input);
+  cgmesh::Status status =
+    cgmesh::convertToTetMesh(input, regionArrayName, inputMesh, this->ResolveSizeArrayName(input));
   if (!status.ok())
   {
     vtkErrorMacro(<< "Cannot read the input: " << status.message() << ".");
     return 0;
+  }
+  // Without a region array, the input's integer cell arrays guard the material interfaces.
+  this->Internals->MaterialLabelArrays.clear();
+  if (regionArrayName.empty())
+  {
+    const std::vector<std::string> labels = cgmesh::findMaterialLabelArrays(input);
+    cgmesh::combineMaterialLabels(input, labels, inputMesh);
+    for (const std::string& name : labels)
+    {
+      this->Internals->MaterialLabelArrays +=
+        (this->Internals->MaterialLabelArrays.empty() ? "" : ",") + name;
+    }
+    if (labels.empty())
+    {
+      inputMesh.regions.clear();
+    }
   }
 
   cgmesh::AdaptationResult result;

@@ -108,8 +108,10 @@ public:
    * NumberOfPartitions (default 0, automatic): partitions, reduced with a warning for a smaller
    * mesh. Partitioner (AUTOMATIC_PARTITIONER): METIS on the dual graph or runs along a Hilbert
    * curve. RegionArrayName (default none): numeric cell array of material/region ids; unset, empty
-   * or "None" (ParaView's "no array" entry) means one region, unless the input has a cell array
-   * called "None". Any other name that is not a cell array of the input is an error.
+   * or "None" (ParaView's "no array" entry) means no named array, unless the input has a cell
+   * array called "None": then the input's integer cell arrays are kept together as material
+   * labels (GetMaterialLabelArrays() says which). Any other name that is not a cell array of the
+   * input is an error.
    * PartitionByRegion (off) and PartitionsPerRegion (1): cut along the regions instead of METIS on
    * the whole mesh (needs RegionArrayName).
    * ColoringAlgorithm (GREEDY_LEAST_USED), Method (TEMPLATE), NumberOfIterations (1).
@@ -159,6 +161,14 @@ public:
   void SetParameterText(const char* name, const char* value);
   const char* GetParameterText(const char* name);
   ///@}
+
+  /**
+   * The cell arrays the last run kept as material labels because RegionArrayName was None
+   * (comma-separated; empty when a region array was named or the input has no integer cell
+   * array). Cells whose values differ in any of them are treated as different materials:
+   * improvement never crosses their interfaces and the Delaunay method keeps them.
+   */
+  const char* GetMaterialLabelArrays() const;
 
 #if !defined(__VTK_WRAP__)
   ///@{

@@ -102,7 +102,9 @@ inline const std::vector<ParameterSpec>& parameterTable()
           "equal runs along a Hilbert curve through the tet centroids: one sort, the same cost "
           "for any count, longer interfaces" } } },
     { "RegionArrayName", "--region-array", "NAME", K::Text, 0, 0, 0, "", S::Any,
-      "numeric cell array of material/region ids (empty or None: one region)",
+      "numeric cell array of material/region ids; empty or None: the input's integer cell "
+      "arrays (ids, ghost flags and cgmesh's own arrays excepted) are kept as material labels "
+      "together, so no material interface moves",
       &O::regionArrayName },
     { "PartitionByRegion", "--partition-by-region", "", K::Boolean, 0, 1, 0, "", S::Any,
       "cut along the regions of RegionArrayName instead of METIS on the whole mesh: no partition "

@@ -193,9 +193,9 @@ def test_partition_by_region(cgmesh, scratch):
     check(result.returncode == 0, "check the refined FinFET: " + result.stdout)
 
 
-def region_volumes(cgmesh, mesh):
-    """{region id: volume} from `cgmesh check --region-array Material`, and the exit status."""
-    result = run(cgmesh, "check", mesh, "--region-array", "Material")
+def region_volumes(cgmesh, mesh, array="Material"):
+    """{region id: volume} from `cgmesh check --region-array ARRAY`, and the exit status."""
+    result = run(cgmesh, "check", mesh, "--region-array", array)
     volumes = {}
     for line in result.stdout.splitlines():
         words = line.split()
@@ -626,6 +626,73 @@ def test_region_array_named(cgmesh, scratch):
         check(False, "cannot write a file with a string cell array")
 
 
+ADD_LABEL_ARRAYS = """import sys
+from vtkmodules.vtkCommonCore import vtkIntArray
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+reader = vtkXMLUnstructuredGridReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+grid = reader.GetOutput()
+numbers, layers = vtkIntArray(), vtkIntArray()
+numbers.SetName("CellNumber")
+layers.SetName("Layer")
+bounds = grid.GetBounds()
+middle = 0.5 * (bounds[4] + bounds[5])
+for cell in range(grid.GetNumberOfCells()):
+    numbers.InsertNextValue(cell)
+    ids = grid.GetCell(cell).GetPointIds()
+    z = sum(grid.GetPoint(ids.GetId(k))[2] for k in range(4)) / 4
+    layers.InsertNextValue(1 if z > middle else 0)
+grid.GetCellData().AddArray(numbers)
+grid.GetCellData().AddArray(layers)
+writer = vtkXMLUnstructuredGridWriter()
+writer.SetInputData(grid)
+writer.SetFileName(sys.argv[2])
+sys.exit(0 if writer.Write() == 1 else 1)
+"""
+
+
+def test_material_labels_by_default(cgmesh, scratch):
+    """Without --region-array the integer cell arrays are kept as material labels: the volume of
+    every value of Material and of a second labelling is conserved, an id array and cgmesh's own
+    output arrays are not taken for labels, and --refine-regions needs a named region array."""
+    labelled = os.path.join(scratch, "labelled.vtu")
+    if subprocess.run([sys.executable, "-c", ADD_LABEL_ARRAYS, os.path.join(scratch, "finfet.vtu"),
+                       labelled]).returncode != 0:
+        check(False, "cannot add label arrays to the FinFET")
+        return
+    refined = os.path.join(scratch, "labelled-refined.vtu")
+    stats = os.path.join(scratch, "labelled-refined.json")
+    result = run(cgmesh, "refine", labelled, refined, "--threads", "2", "--stats", stats)
+    check(result.returncode == 0, "refine without --region-array: " + result.stderr)
+    if result.returncode != 0:
+        return
+    with open(stats) as handle:
+        statistics = json.load(handle)
+    check(statistics.get("materialLabelArrays") == "Material,Layer",
+          "material labels %r" % statistics.get("materialLabelArrays"))
+    check("material labels" in result.stdout, "the table does not name the material labels")
+    check(statistics["improvement"]["edgeRemovals"] > 0, "no improvement happened")
+    for array in ("Material", "Layer"):
+        before, _ = region_volumes(cgmesh, labelled, array)
+        after, status = region_volumes(cgmesh, refined, array)
+        check(status == 0, "check the refined FinFET by " + array)
+        # `cgmesh check` prints 12 significant digits.
+        check(len(before) > 1 and before.keys() == after.keys() and all(
+            abs(after[value] - volume) <= 2e-11 * volume for value, volume in before.items()),
+            "%s volumes %s != input %s" % (array, after, before))
+    again = os.path.join(scratch, "labelled-again.vtu")
+    result = run(cgmesh, "refine", refined, again, "--stats", stats)
+    with open(stats) as handle:
+        statistics = json.load(handle)
+    check(result.returncode == 0 and statistics.get("materialLabelArrays") == "Material,Layer",
+          "refining an output: labels %r" % statistics.get("materialLabelArrays"))
+    refused = os.path.join(scratch, "labelled-refused.vtu")
+    expect_early_error(cgmesh, scratch, "refine-regions without a region array",
+                       ["refine", labelled, refused, "--refine-regions", "1"], refused, 1,
+                       "RefinementRegions needs a region array")
+
+
 def test_size_forecast(cgmesh, scratch):
     """Several template iterations whose last must exceed --max-cells are refused before the
     first; a run at exactly the limit is not."""
@@ -818,6 +885,7 @@ def main():
     test_option_values(options.cgmesh, options.scratch)
     test_nothing_refined(options.cgmesh, options.scratch)
     test_region_array_named(options.cgmesh, options.scratch)
+    test_material_labels_by_default(options.cgmesh, options.scratch)
     test_size_forecast(options.cgmesh, options.scratch)
     test_compression(options.cgmesh, options.scratch)
     test_meshio_reads_outputs(options.cgmesh, options.scratch)

@@ -1,0 +1,120 @@
+#include "cgmeshMaterialLabels.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <map>
+#include <unordered_set>
+
+namespace cgmesh
+{
+namespace
+{
+
+bool isIntegerType(int type)
+{
+  switch (type)
+  {
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SHORT:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_INT:
+    case VTK_UNSIGNED_INT:
+    case VTK_LONG:
+    case VTK_UNSIGNED_LONG:
+    case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG:
+    case VTK_ID_TYPE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Materials are few: an array with more distinct values than 64, or than 1% of the cells when
+// that is more, numbers cells (or, after a refinement, the cells' parents) instead.
+bool looksLikeIds(vtkDataArray* array)
+{
+  const vtkIdType count = array->GetNumberOfTuples();
+  const std::size_t mostLabels = std::max<std::size_t>(64, static_cast<std::size_t>(count / 100));
+  std::unordered_set<long long> seen;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    seen.insert(static_cast<long long>(array->GetComponent(i, 0)));
+    if (seen.size() > mostLabels)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace
+
+std::vector<std::string> findMaterialLabelArrays(vtkUnstructuredGrid* grid)
+{
+  static const char* const notLabels[] = { "vtkOriginalCellIds", "vtkGhostType", "vtkProcessId",
+    "PartitionId", "ColorId", "NearFormerInterface" };
+  std::vector<std::string> names;
+  vtkCellData* cellData = grid->GetCellData();
+  for (int index = 0; index < cellData->GetNumberOfArrays(); ++index)
+  {
+    vtkDataArray* array = cellData->GetArray(index);
+    const int attribute = cellData->IsArrayAnAttribute(index);
+    if (!array || !array->GetName() || array->GetNumberOfComponents() != 1 ||
+      !isIntegerType(array->GetDataType()) || attribute == vtkDataSetAttributes::GLOBALIDS ||
+      attribute == vtkDataSetAttributes::PEDIGREEIDS)
+    {
+      continue;
+    }
+    bool excluded = false;
+    for (const char* name : notLabels)
+    {
+      excluded = excluded || std::string(name) == array->GetName();
+    }
+    if (!excluded && !looksLikeIds(array))
+    {
+      names.emplace_back(array->GetName());
+    }
+  }
+  return names;
+}
+
+void combineMaterialLabels(
+  vtkUnstructuredGrid* grid, const std::vector<std::string>& arrayNames, TetMesh& mesh)
+{
+  const vtkIdType cells = grid->GetNumberOfCells();
+  std::vector<vtkDataArray*> arrays;
+  for (const std::string& name : arrayNames)
+  {
+    arrays.push_back(grid->GetCellData()->GetArray(name.c_str()));
+  }
+  std::vector<std::vector<long long>> combinations(static_cast<std::size_t>(cells));
+  std::map<std::vector<long long>, int> idOf;
+  for (vtkIdType cell = 0; cell < cells; ++cell)
+  {
+    auto& values = combinations[cell];
+    for (vtkDataArray* array : arrays)
+    {
+      values.push_back(static_cast<long long>(array->GetComponent(cell, 0)));
+    }
+    idOf.emplace(values, 0);
+  }
+  int next = 0;
+  for (auto& entry : idOf)
+  {
+    entry.second = next++;
+  }
+  mesh.regions.resize(static_cast<std::size_t>(cells));
+  for (vtkIdType cell = 0; cell < cells; ++cell)
+  {
+    mesh.regions[cell] = idOf.at(combinations[cell]);
+  }
+}
+
+} // namespace cgmesh
