@@ -1,5 +1,7 @@
 #include "cgmeshMaterialLabels.h"
 
+#include "cgmeshVTKConversion.h"
+
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
@@ -13,28 +15,6 @@ namespace cgmesh
 {
 namespace
 {
-
-bool isIntegerType(int type)
-{
-  switch (type)
-  {
-    case VTK_CHAR:
-    case VTK_SIGNED_CHAR:
-    case VTK_UNSIGNED_CHAR:
-    case VTK_SHORT:
-    case VTK_UNSIGNED_SHORT:
-    case VTK_INT:
-    case VTK_UNSIGNED_INT:
-    case VTK_LONG:
-    case VTK_UNSIGNED_LONG:
-    case VTK_LONG_LONG:
-    case VTK_UNSIGNED_LONG_LONG:
-    case VTK_ID_TYPE:
-      return true;
-    default:
-      return false;
-  }
-}
 
 // Materials are few: an array with more distinct values than 64, or than 1% of the cells when
 // that is more, numbers cells (or, after a refinement, the cells' parents) instead.
@@ -67,7 +47,7 @@ std::vector<std::string> findMaterialLabelArrays(vtkUnstructuredGrid* grid)
     vtkDataArray* array = cellData->GetArray(index);
     const int attribute = cellData->IsArrayAnAttribute(index);
     if (!array || !array->GetName() || array->GetNumberOfComponents() != 1 ||
-      !isIntegerType(array->GetDataType()) || attribute == vtkDataSetAttributes::GLOBALIDS ||
+      !isIntegerDataType(array->GetDataType()) || attribute == vtkDataSetAttributes::GLOBALIDS ||
       attribute == vtkDataSetAttributes::PEDIGREEIDS)
     {
       continue;

@@ -180,6 +180,28 @@ Status copySizes(vtkUnstructuredGrid* grid, const std::string& sizeArrayName, Te
 
 } // namespace
 
+bool isIntegerDataType(int type)
+{
+  switch (type)
+  {
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SHORT:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_INT:
+    case VTK_UNSIGNED_INT:
+    case VTK_LONG:
+    case VTK_UNSIGNED_LONG:
+    case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG:
+    case VTK_ID_TYPE:
+      return true;
+    default:
+      return false;
+  }
+}
+
 Status convertToTetMesh(vtkUnstructuredGrid* grid, const std::string& regionArrayName,
   TetMesh& mesh, const std::string& sizeArrayName)
 {

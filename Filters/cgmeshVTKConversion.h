@@ -16,6 +16,9 @@ class vtkUnstructuredGrid;
 namespace cgmesh
 {
 
+// Whether a VTK data type (VTK_INT, VTK_DOUBLE, ...) is an integer type, vtkIdType included.
+CGMESHFILTERS_EXPORT bool isIntegerDataType(int vtkType);
+
 // Number of cells of `grid` that are not linear tetrahedra (VTK_TETRA).
 CGMESHFILTERS_EXPORT vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid);
 

@@ -1,6 +1,7 @@
 #include "vtkCoarseGrainedMeshAdaptation.h"
 
 #include "cgmeshMaterialLabels.h"
+#include "cgmeshPointData.h"
 #include "cgmeshTetQuality.h"
 #include "cgmeshVTKConversion.h"
 
@@ -128,69 +129,6 @@ void copyCellDataToChildren(vtkCellData* inputCellData,
   outputCellData->CopyData(inputCellData, parentIds, childIds);
 }
 
-// Output point data is the provenance-weighted sum of input point data (exact for linear fields).
-void interpolatePointData(vtkPointData* inputPointData, const cgmesh::PointProvenance& provenance,
-  vtkPointData* outputPointData)
-{
-  const vtkIdType numberOfPoints = static_cast<vtkIdType>(provenance.offsets.size()) - 1;
-  outputPointData->InterpolateAllocate(inputPointData, numberOfPoints);
-  vtkNew<vtkIdList> sourceIds;
-  std::vector<double> weights;
-  for (vtkIdType pointId = 0; pointId < numberOfPoints; ++pointId)
-  {
-    const auto begin = provenance.offsets[pointId];
-    const auto end = provenance.offsets[pointId + 1];
-    sourceIds->SetNumberOfIds(static_cast<vtkIdType>(end - begin));
-    weights.resize(static_cast<size_t>(end - begin));
-    for (auto source = begin; source < end; ++source)
-    {
-      sourceIds->SetId(static_cast<vtkIdType>(source - begin), provenance.sources[source]);
-      weights[source - begin] = provenance.weights[source];
-    }
-    outputPointData->InterpolatePoint(inputPointData, pointId, sourceIds, weights.data());
-  }
-}
-
-// vtkDataSetAttributes never interpolates vtkIdTypeArrays; plain ones (not global or pedigree
-// ids, which have no values between points) are interpolated here like other integer arrays:
-// the provenance-weighted sum, rounded to the nearest integer.
-void interpolateIdTypeArrays(vtkPointData* inputPointData,
-  const cgmesh::PointProvenance& provenance, vtkPointData* outputPointData)
-{
-  const vtkIdType numberOfPoints = static_cast<vtkIdType>(provenance.offsets.size()) - 1;
-  for (int index = 0; index < inputPointData->GetNumberOfArrays(); ++index)
-  {
-    auto* source = vtkIdTypeArray::SafeDownCast(inputPointData->GetAbstractArray(index));
-    const int attribute = inputPointData->IsArrayAnAttribute(index);
-    if (!source || !source->GetName() || outputPointData->GetAbstractArray(source->GetName()) ||
-      attribute == vtkDataSetAttributes::GLOBALIDS ||
-      attribute == vtkDataSetAttributes::PEDIGREEIDS)
-    {
-      continue;
-    }
-    const int components = source->GetNumberOfComponents();
-    vtkNew<vtkIdTypeArray> interpolated;
-    interpolated->SetName(source->GetName());
-    interpolated->SetNumberOfComponents(components);
-    interpolated->SetNumberOfTuples(numberOfPoints);
-    for (vtkIdType pointId = 0; pointId < numberOfPoints; ++pointId)
-    {
-      for (int component = 0; component < components; ++component)
-      {
-        double value = 0;
-        for (auto entry = provenance.offsets[pointId]; entry < provenance.offsets[pointId + 1];
-             ++entry)
-        {
-          value += provenance.weights[entry] *
-            static_cast<double>(source->GetTypedComponent(provenance.sources[entry], component));
-        }
-        interpolated->SetTypedComponent(pointId, component, std::llround(value));
-      }
-    }
-    outputPointData->AddArray(interpolated);
-  }
-}
-
 // The field data some readers refuse (string arrays, an array that may be empty): only with
 // Diagnostics on.
 void addTextDiagnostics(const cgmesh::AdaptationSummary& result,
@@ -313,15 +251,35 @@ void reportWarnings(
   }
 }
 
-void fillOutput(
-  vtkUnstructuredGrid* input, const cgmesh::AdaptationResult& result, vtkUnstructuredGrid* output)
+// Comma-separated names, trimmed; empty entries dropped.
+std::vector<std::string> splitNames(const std::string& text)
+{
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size())
+  {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string name = text.substr(start, comma - start);
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    if (!name.empty())
+    {
+      names.push_back(name);
+    }
+    start = comma + 1;
+  }
+  return names;
+}
+
+void fillOutput(vtkUnstructuredGrid* input, const cgmesh::AdaptationResult& result,
+  const std::string& interpolatedPointArrays, vtkUnstructuredGrid* output)
 {
   cgmesh::convertToUnstructuredGrid(result.mesh, output);
   copyCellDataToChildren(input->GetCellData(), result.parentCell, output->GetCellData());
   if (!result.provenance.offsets.empty()) // made only for inputs with point data
   {
-    interpolatePointData(input->GetPointData(), result.provenance, output->GetPointData());
-    interpolateIdTypeArrays(input->GetPointData(), result.provenance, output->GetPointData());
+    cgmesh::transferPointData(input->GetPointData(), result.provenance,
+      splitNames(interpolatedPointArrays), output->GetPointData());
   }
   output->GetCellData()->AddArray(makeCellIntArray("PartitionId", result.partitionOfCell));
   output->GetCellData()->AddArray(makeCellIntArray("ColorId", result.colorOfCell));
@@ -602,7 +560,7 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
     return 1;
   }
 
-  fillOutput(input, result, output);
+  fillOutput(input, result, this->Internals->Parameters.interpolatedPointArrays, output);
   this->UpdateProgress(0.9);
   const cgmesh::Stopwatch qualityStopwatch;
   status = cgmesh::addTetQualityArrays(output, result.summary.plan.threads);

@@ -112,6 +112,9 @@ public:
    * array called "None": then the input's integer cell arrays are kept together as material
    * labels (GetMaterialLabelArrays() says which). Any other name that is not a cell array of the
    * input is an error.
+   * InterpolatedPointArrays (empty): integer point arrays to interpolate and round like fields;
+   * every other integer point array is a labelling (node sets, contact flags): a new point takes
+   * the value all its sources share, else 0.
    * PartitionByRegion (off) and PartitionsPerRegion (1): cut along the regions instead of METIS on
    * the whole mesh (needs RegionArrayName).
    * ColoringAlgorithm (GREEDY_LEAST_USED), Method (TEMPLATE), NumberOfIterations (1).
@@ -129,6 +132,7 @@ public:
   cgmeshParameterMacro(NumberOfPartitions, int);
   cgmeshParameterMacro(Partitioner, int);
   cgmeshTextParameterMacro(RegionArrayName);
+  cgmeshTextParameterMacro(InterpolatedPointArrays);
   cgmeshBooleanParameterMacro(PartitionByRegion);
   cgmeshParameterMacro(PartitionsPerRegion, int);
   cgmeshParameterMacro(ColoringAlgorithm, int);

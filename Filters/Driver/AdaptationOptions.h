@@ -51,6 +51,9 @@ struct AdaptationOptions
   double sizeGradation{};
   std::string refinementRegions; // "2,5": region ids (parsed into the plan)
   std::string refinementBox;     // "x0,y0,z0,x1,y1,z1"
+  // Integer point arrays to interpolate (and round) like fields, comma-separated; the others are
+  // labels (read by the VTK adapter).
+  std::string interpolatedPointArrays;
   double maximumVolume{};
   double volumeFactor{};
   double radiusEdgeRatio{};
@@ -106,6 +109,10 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "arrays (ids, ghost flags and cgmesh's own arrays excepted) are kept as material labels "
       "together, so no material interface moves",
       &O::regionArrayName },
+    { "InterpolatedPointArrays", "--interpolate-arrays", "NAMES", K::Text, 0, 0, 0, "", S::Any,
+      "comma-separated integer point arrays to interpolate and round like fields; the other "
+      "integer point arrays are labels: a new point takes the value its sources share, else 0",
+      &O::interpolatedPointArrays },
     { "PartitionByRegion", "--partition-by-region", "", K::Boolean, 0, 1, 0, "", S::Any,
       "cut along the regions of RegionArrayName instead of METIS on the whole mesh: no partition "
       "holds two regions",

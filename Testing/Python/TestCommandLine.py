@@ -645,6 +645,11 @@ for cell in range(grid.GetNumberOfCells()):
     layers.InsertNextValue(1 if z > middle else 0)
 grid.GetCellData().AddArray(numbers)
 grid.GetCellData().AddArray(layers)
+contact = vtkIntArray()
+contact.SetName("OnContact")
+for point in range(grid.GetNumberOfPoints()):
+    contact.InsertNextValue(1 if grid.GetPoint(point)[0] == bounds[0] else 0)
+grid.GetPointData().AddArray(contact)
 writer = vtkXMLUnstructuredGridWriter()
 writer.SetInputData(grid)
 writer.SetFileName(sys.argv[2])
@@ -691,6 +696,49 @@ def test_material_labels_by_default(cgmesh, scratch):
     expect_early_error(cgmesh, scratch, "refine-regions without a region array",
                        ["refine", labelled, refused, "--refine-regions", "1"], refused, 1,
                        "RefinementRegions needs a region array")
+
+
+MARKED_POINTS = """import sys
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+reader = vtkXMLUnstructuredGridReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+grid = reader.GetOutput()
+contact = grid.GetPointData().GetArray("OnContact")
+xmin = grid.GetBounds()[0]
+marked = [p for p in range(grid.GetNumberOfPoints()) if contact.GetValue(p) != 0]
+off = [p for p in marked if grid.GetPoint(p)[0] != xmin]
+on = [p for p in range(grid.GetNumberOfPoints()) if grid.GetPoint(p)[0] == xmin]
+print(len(marked), len(off), len(on))
+"""
+
+
+def marked_points(path):
+    """(marked, marked off the x = xmin plane, points on the plane) of the OnContact array."""
+    result = subprocess.run([sys.executable, "-c", MARKED_POINTS, path], capture_output=True,
+                            text=True)
+    check(result.returncode == 0, "cannot read OnContact of " + path + ": " + result.stderr)
+    return tuple(int(word) for word in result.stdout.split()) if result.returncode == 0 else None
+
+
+def test_point_labels(cgmesh, scratch):
+    """An integer point array is a labelling: after refinement the OnContact node set marks
+    exactly the points of its plane, new ones included; --interpolate-arrays interpolates and
+    rounds it instead, which marks points off the plane."""
+    labelled = os.path.join(scratch, "labelled.vtu")
+    refined = os.path.join(scratch, "labelled-refined.vtu")
+    before = marked_points(labelled)
+    after = marked_points(refined)
+    if before and after:
+        check(before[0] == before[2] and before[0] > 0, "the input's node set %s" % (before,))
+        check(after[1] == 0 and after[0] == after[2] and after[0] > before[0],
+              "refined node set (marked, off the plane, on the plane) %s" % (after,))
+    interpolated = os.path.join(scratch, "labelled-interpolated.vtu")
+    result = run(cgmesh, "refine", labelled, interpolated, "--interpolate-arrays", "OnContact")
+    check(result.returncode == 0, "refine --interpolate-arrays: " + result.stderr)
+    rounded = marked_points(interpolated)
+    if rounded:
+        check(rounded[1] > 0, "--interpolate-arrays OnContact left it a labelling %s" % (rounded,))
 
 
 def test_size_forecast(cgmesh, scratch):
@@ -886,6 +934,7 @@ def main():
     test_nothing_refined(options.cgmesh, options.scratch)
     test_region_array_named(options.cgmesh, options.scratch)
     test_material_labels_by_default(options.cgmesh, options.scratch)
+    test_point_labels(options.cgmesh, options.scratch)
     test_size_forecast(options.cgmesh, options.scratch)
     test_compression(options.cgmesh, options.scratch)
     test_meshio_reads_outputs(options.cgmesh, options.scratch)

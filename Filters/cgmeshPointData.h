@@ -1,0 +1,27 @@
+// Point data of the refined mesh from the input's, through each new point's provenance (the
+// input points it comes from, with weights): fields are interpolated, labels are kept only where
+// the sources agree.
+#ifndef cgmeshPointData_h
+#define cgmeshPointData_h
+
+#include "Merge/MeshMerge.h"
+
+#include <string>
+#include <vector>
+
+class vtkPointData;
+
+namespace cgmesh
+{
+
+// Floating-point arrays get the provenance-weighted sum (exact for linear fields); so do the
+// integer arrays named in `interpolatedArrays`, rounded to the nearest integer. Every other integer
+// array (global and pedigree ids aside, which are not carried over) is a labelling, such as a node
+// set or a contact flag: a point takes the value, component by component, that all its sources
+// with a non-zero weight share, else 0, so no label appears away from where it was.
+void transferPointData(vtkPointData* input, const PointProvenance& provenance,
+  const std::vector<std::string>& interpolatedArrays, vtkPointData* output);
+
+} // namespace cgmesh
+
+#endif
