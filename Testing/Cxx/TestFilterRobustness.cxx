@@ -767,23 +767,74 @@ void checkPointArray(vtkUnstructuredGrid* output, int type, int components)
   CGMESH_CHECK(fractionalValues == 0, "point array " << name << ": fractional values");
 }
 
+// An integer point array left a labelling: a point where an input point was keeps its value;
+// a new one, between points whose values all differ on this field, gets 0.
+void checkPointLabels(
+  vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, int type, int components)
+{
+  const std::string name = arrayName("Point", type, components);
+  vtkDataArray* before = input->GetPointData()->GetArray(name.c_str());
+  vtkDataArray* after = output->GetPointData()->GetArray(name.c_str());
+  CGMESH_CHECK(
+    after && after->GetDataType() == type && after->GetNumberOfComponents() == components,
+    "point array " << name << " missing or of another type");
+  if (!after || !before)
+    return;
+  std::map<std::array<double, 3>, vtkIdType> inputPointAt;
+  for (vtkIdType pointId = 0; pointId < input->GetNumberOfPoints(); ++pointId)
+  {
+    const Vector point = pointOf(input, pointId);
+    inputPointAt[{ point[0], point[1], point[2] }] = pointId;
+  }
+  vtkIdType wrongValues = 0, newPoints = 0;
+  for (vtkIdType pointId = 0; pointId < output->GetNumberOfPoints(); ++pointId)
+  {
+    const Vector point = pointOf(output, pointId);
+    const auto found = inputPointAt.find({ point[0], point[1], point[2] });
+    newPoints += found == inputPointAt.end() ? 1 : 0;
+    for (int component = 0; component < components; ++component)
+    {
+      const double expected =
+        found == inputPointAt.end() ? 0.0 : before->GetComponent(found->second, component);
+      wrongValues += after->GetComponent(pointId, component) == expected ? 0 : 1;
+    }
+  }
+  CGMESH_CHECK(newPoints > 0, "point array " << name << ": no new point to check");
+  CGMESH_CHECK(wrongValues == 0,
+    "point array " << name << ": " << wrongValues << " values not kept as labels");
+}
+
 void test_attachedData()
 {
   vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(2);
   addArraysOfEveryType(input);
-  FilterRun run(input, "arrays of every type");
-  run.Filter->SetNumberOfIterations(2);
-  run.Filter->SetEdgeLengthFactor(0.25);
-  expectRefinement(run, 1.0);
-  vtkUnstructuredGrid* output = run.output();
-  if (output->GetNumberOfCells() == 0)
-    return;
-  CGMESH_CHECK(output->GetNumberOfPoints() > 2 * input->GetNumberOfPoints(), "few new points");
-  cgmesh_test::checkDataTransfer(input, output);
-  checkCellArraysCopied(input, output);
+  // Integer point arrays are labels unless named for interpolation: both ways are checked.
+  std::string integerPointArrays;
   for (const int type : NumericTypes)
     for (const int components : { 1, 3 })
-      checkPointArray(output, type, components);
+      if (type != VTK_FLOAT && type != VTK_DOUBLE)
+        integerPointArrays +=
+          (integerPointArrays.empty() ? "" : ",") + arrayName("Point", type, components);
+  for (const bool interpolated : { true, false })
+  {
+    FilterRun run(input, interpolated ? "arrays of every type" : "integer point labels");
+    run.Filter->SetNumberOfIterations(2);
+    run.Filter->SetEdgeLengthFactor(0.25);
+    run.Filter->SetInterpolatedPointArrays(interpolated ? integerPointArrays.c_str() : "");
+    expectRefinement(run, 1.0);
+    vtkUnstructuredGrid* output = run.output();
+    if (output->GetNumberOfCells() == 0)
+      return;
+    CGMESH_CHECK(output->GetNumberOfPoints() > 2 * input->GetNumberOfPoints(), "few new points");
+    cgmesh_test::checkDataTransfer(input, output);
+    checkCellArraysCopied(input, output);
+    for (const int type : NumericTypes)
+      for (const int components : { 1, 3 })
+        if (interpolated || type == VTK_FLOAT || type == VTK_DOUBLE)
+          checkPointArray(output, type, components);
+        else
+          checkPointLabels(input, output, type, components);
+  }
 }
 
 } // namespace
