@@ -4,6 +4,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkCellTypes.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,6 +37,48 @@ vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid)
     }
   }
   return count;
+}
+
+std::string describeNonTetrahedra(vtkUnstructuredGrid* grid)
+{
+  std::map<int, vtkIdType> countOfType;
+  for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
+  {
+    const int type = grid->GetCellType(cellId);
+    if (type != VTK_TETRA)
+    {
+      ++countOfType[type];
+    }
+  }
+  if (countOfType.empty())
+  {
+    return std::string();
+  }
+  std::string types;
+  bool volumeCells = false, lowerCells = false;
+  for (const auto& entry : countOfType)
+  {
+    const char* className = vtkCellTypes::GetClassNameFromTypeId(entry.first);
+    std::string name = className ? className : "type " + std::to_string(entry.first);
+    if (name.rfind("vtk", 0) == 0)
+    {
+      name = name.substr(3);
+    }
+    types += (types.empty() ? "" : ", ") + std::to_string(entry.second) + " " + name;
+    (vtkCellTypes::GetDimension(static_cast<unsigned char>(entry.first)) == 3 ? volumeCells
+                                                                              : lowerCells) = true;
+  }
+  std::string advice;
+  if (lowerCells)
+  {
+    advice += " Triangles, lines and vertices tag boundaries, edges or points and are not "
+              "refined yet: keep the tetrahedra with ParaView's Extract Cells By Type (Tetra).";
+  }
+  if (volumeCells)
+  {
+    advice += " Split other volume cells with ParaView's Tetrahedralize filter.";
+  }
+  return types + "." + advice;
 }
 
 namespace

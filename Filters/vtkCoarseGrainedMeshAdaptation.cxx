@@ -478,7 +478,7 @@ bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
   {
     vtkErrorMacro(<< "The input must hold only linear tetrahedra, but " << nonTetrahedra
                   << " of its " << input->GetNumberOfCells()
-                  << " cells are of other types. Apply ParaView's Tetrahedralize filter first.");
+                  << " cells are of other types: " << cgmesh::describeNonTetrahedra(input));
     return false;
   }
   if (!this->Internals->Parameters.refinementRegions.empty() &&

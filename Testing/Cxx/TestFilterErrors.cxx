@@ -86,12 +86,34 @@ void test_nonTetrahedralInput()
   CGMESH_CHECK(run.Messages->Errors > 0, "no error for a hexahedron in the input");
   CGMESH_CHECK(run.Messages->AllMessages.find("Tetrahedralize") != std::string::npos,
     "the error does not point to Tetrahedralize: " << run.Messages->AllMessages);
-  CGMESH_CHECK(run.Messages->AllMessages.find("1 of its 2 cells") != std::string::npos,
+  CGMESH_CHECK(run.Messages->AllMessages.find("1 of its 2 cells") != std::string::npos &&
+      run.Messages->AllMessages.find("1 Hexahedron") != std::string::npos,
     "the error does not count the non-tetrahedral cells: " << run.Messages->AllMessages);
   CGMESH_CHECK(run.UpdateResult == 0, "Update succeeded on non-tetrahedral input");
   CGMESH_CHECK(run.outputCells() == 0, "output not empty after an error");
   CGMESH_CHECK(
     input->GetMTime() == inputTime && input->GetNumberOfCells() == 2, "the input was modified");
+}
+
+// A boundary triangle tagged next to the tetrahedra (as Gmsh meshes come): the error names the
+// types and points to Extract Cells By Type, not to Tetrahedralize, which would not remove it.
+void test_boundaryTriangleInput()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(1);
+  const vtkIdType triangle[3] = { 0, 1, 2 };
+  input->InsertNextCell(VTK_TRIANGLE, 3, triangle);
+  input->GetCellData()->Initialize();
+  const vtkIdType cells = input->GetNumberOfCells();
+  FilterRun run(input);
+  run.update();
+  const std::string& messages = run.Messages->AllMessages;
+  CGMESH_CHECK(run.UpdateResult == 0 && run.outputCells() == 0, "a triangle was accepted");
+  CGMESH_CHECK(messages.find("1 of its " + std::to_string(cells) + " cells") != std::string::npos &&
+      messages.find("1 Triangle") != std::string::npos &&
+      messages.find("Extract Cells By Type") != std::string::npos &&
+      messages.find("Tetrahedralize") == std::string::npos,
+    "the error does not name the triangle and the filter that removes it: " << messages);
+  CGMESH_CHECK(input->GetNumberOfCells() == cells, "the input was modified");
 }
 
 void test_missingRegionArray()
@@ -310,6 +332,7 @@ void test_coloringSetters()
 int main()
 {
   test_nonTetrahedralInput();
+  test_boundaryTriangleInput();
   test_missingRegionArray();
   test_partitionByRegionWithoutRegionArray();
   test_regionArrayChoices();
