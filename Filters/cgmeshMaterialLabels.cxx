@@ -74,15 +74,20 @@ void combineMaterialLabels(
   {
     arrays.push_back(grid->GetCellData()->GetArray(name.c_str()));
   }
-  std::vector<std::vector<long long>> combinations(static_cast<std::size_t>(cells));
+  std::vector<long long> values(arrays.size());
+  auto readValues = [&](vtkIdType cell)
+  {
+    for (std::size_t k = 0; k < arrays.size(); ++k)
+    {
+      values[k] = static_cast<long long>(arrays[k]->GetComponent(cell, 0));
+    }
+  };
+  // Two passes over the arrays: the combinations first (numbered in sorted order), then each
+  // cell's number, so no per-cell copy of the values is kept.
   std::map<std::vector<long long>, int> idOf;
   for (vtkIdType cell = 0; cell < cells; ++cell)
   {
-    auto& values = combinations[cell];
-    for (vtkDataArray* array : arrays)
-    {
-      values.push_back(static_cast<long long>(array->GetComponent(cell, 0)));
-    }
+    readValues(cell);
     idOf.emplace(values, 0);
   }
   int next = 0;
@@ -93,7 +98,8 @@ void combineMaterialLabels(
   mesh.regions.resize(static_cast<std::size_t>(cells));
   for (vtkIdType cell = 0; cell < cells; ++cell)
   {
-    mesh.regions[cell] = idOf.at(combinations[cell]);
+    readValues(cell);
+    mesh.regions[cell] = idOf.at(values);
   }
 }
 

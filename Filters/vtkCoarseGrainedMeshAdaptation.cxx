@@ -530,15 +530,14 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   if (regionArrayName.empty())
   {
     const std::vector<std::string> labels = cgmesh::findMaterialLabelArrays(input);
-    cgmesh::combineMaterialLabels(input, labels, inputMesh);
+    if (!labels.empty())
+    {
+      cgmesh::combineMaterialLabels(input, labels, inputMesh);
+    }
     for (const std::string& name : labels)
     {
       this->Internals->MaterialLabelArrays +=
         (this->Internals->MaterialLabelArrays.empty() ? "" : ",") + name;
-    }
-    if (labels.empty())
-    {
-      inputMesh.regions.clear();
     }
   }
 

@@ -1,204 +1,40 @@
 // Awkward and bad inputs through vtkCoarseGrainedMeshAdaptation. Every case gives either a valid
 // conforming refinement, or a failed RequestData with a vtkErrorMacro message and an empty output;
-// in both the input object keeps its points, cells, arrays and MTime.
-#include "FilterTestSupport.h"
+// in both the input object keeps its points, cells, arrays and MTime. Attached data of every type:
+// TestFilterAttachedData.
+#include "FilterRunChecks.h"
 
 #include "CubeGenerator.h"
 #include "cgmeshVTKConversion.h"
 
-#include "vtkAbstractArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkCoarseGrainedMeshAdaptation.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkExecutive.h"
-#include "vtkFieldData.h"
-#include "vtkFloatArray.h"
-#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkVariant.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
-#include <functional>
-#include <initializer_list>
 #include <limits>
-#include <map>
 #include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace
 {
 
-using Vector = std::array<double, 3>;
-
-// Counts errors and warnings and keeps their text (and keeps VTK from printing them).
-class MessageObserver : public vtkCommand
-{
-public:
-  static MessageObserver* New() { return new MessageObserver; }
-  void Execute(vtkObject*, unsigned long eventId, void* callData) override
-  {
-    (eventId == vtkCommand::ErrorEvent ? this->Errors : this->Warnings)++;
-    this->Text += callData ? static_cast<const char*>(callData) : "";
-    this->Text += "\n";
-  }
-  int Errors = 0;
-  int Warnings = 0;
-  std::string Text;
-};
-
-// A deep copy and the MTime of the input, taken before the filter runs.
-struct InputSnapshot
-{
-  vtkNew<vtkUnstructuredGrid> Copy;
-  vtkMTimeType Time = 0;
-
-  explicit InputSnapshot(vtkUnstructuredGrid* input)
-  {
-    this->Copy->DeepCopy(input);
-    this->Time = input->GetMTime();
-  }
-};
-
-void checkInputUnchanged(
-  vtkUnstructuredGrid* input, const InputSnapshot& snapshot, const std::string& caseName)
-{
-  CGMESH_CHECK(input->GetMTime() == snapshot.Time, caseName << ": the input's MTime changed");
-  CGMESH_CHECK(input->GetNumberOfPoints() == snapshot.Copy->GetNumberOfPoints() &&
-      input->GetNumberOfCells() == snapshot.Copy->GetNumberOfCells(),
-    caseName << ": the input's point or cell count changed");
-  CGMESH_CHECK(input->GetFieldData()->GetNumberOfArrays() ==
-      snapshot.Copy->GetFieldData()->GetNumberOfArrays(),
-    caseName << ": the input's field data changed");
-  if (input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
-  {
-    return; // identicalGrids needs points and cells
-  }
-  std::string difference;
-  CGMESH_CHECK(cgmesh_test::identicalGrids(input, snapshot.Copy, difference),
-    caseName << ": the input was modified: " << difference);
-}
-
-// One filter run on `input` (4 partitions, 1 iteration, factor 0.5, 2 threads unless changed),
-// with its messages observed and a snapshot of the input.
-struct FilterRun
-{
-  vtkUnstructuredGrid* Input;
-  std::string CaseName;
-  InputSnapshot Snapshot;
-  vtkNew<vtkCoarseGrainedMeshAdaptation> Filter;
-  vtkNew<MessageObserver> Messages;
-  int UpdateResult = -1;
-
-  FilterRun(vtkUnstructuredGrid* input, std::string caseName)
-    : Input(input)
-    , CaseName(std::move(caseName))
-    , Snapshot(input)
-  {
-    this->Filter->SetInputData(input);
-    this->Filter->SetNumberOfPartitions(4);
-    this->Filter->SetNumberOfIterations(1);
-    this->Filter->SetEdgeLengthFactor(0.5);
-    this->Filter->SetNumberOfThreads(2);
-    for (vtkObject* object : { static_cast<vtkObject*>(this->Filter.Get()),
-           static_cast<vtkObject*>(this->Filter->GetExecutive()) })
-    {
-      object->AddObserver(vtkCommand::ErrorEvent, this->Messages);
-      object->AddObserver(vtkCommand::WarningEvent, this->Messages);
-    }
-  }
-
-  vtkUnstructuredGrid* output() { return this->Filter->GetOutput(); }
-  bool said(const std::string& text) const
-  {
-    return this->Messages->Text.find(text) != std::string::npos;
-  }
-
-  void update()
-  {
-    this->UpdateResult = this->Filter->GetExecutive()->Update();
-    checkInputUnchanged(this->Input, this->Snapshot, this->CaseName);
-  }
-};
-
-// RequestData fails with an error whose text holds every phrase, and the output is empty.
-void expectError(FilterRun& run, std::initializer_list<const char*> phrases)
-{
-  run.update();
-  const std::string& name = run.CaseName;
-  CGMESH_CHECK(run.UpdateResult == 0, name << ": Update succeeded");
-  CGMESH_CHECK(run.Messages->Errors > 0, name << ": no error reported");
-  for (const char* phrase : phrases)
-  {
-    CGMESH_CHECK(run.said(phrase),
-      name << ": the error does not say '" << phrase << "': " << run.Messages->Text);
-  }
-  CGMESH_CHECK(run.output()->GetNumberOfCells() == 0 && run.output()->GetNumberOfPoints() == 0,
-    name << ": the output is not empty after an error");
-}
-
-// The output is a valid, conforming, positively oriented mesh of `expectedVolume` (1e-9 relative)
-// without duplicate or unused points.
-void checkValidMesh(vtkUnstructuredGrid* output, double expectedVolume, const std::string& name)
-{
-  const cgmesh::MeshReport report = cgmesh_test::inspectGrid(output, std::string());
-  CGMESH_CHECK(report.isValid(), name << ": " << report.describeProblems());
-  CGMESH_CHECK(report.invertedTets == 0 && report.misorientedFacePairs == 0,
-    name << ": " << report.invertedTets << " inverted tets, " << report.misorientedFacePairs
-         << " misoriented face pairs");
-  CGMESH_CHECK(report.degenerateTets == 0, name << ": " << report.degenerateTets << " degenerate");
-  CGMESH_CHECK(report.duplicatePoints == 0 && report.unusedPoints == 0,
-    name << ": " << report.duplicatePoints << " duplicate, " << report.unusedPoints << " unused");
-  CGMESH_CHECK(std::abs(report.volume - expectedVolume) <= 1e-9 * std::abs(expectedVolume),
-    name << ": volume " << report.volume << ", expected " << expectedVolume);
-}
-
-// The run succeeds without errors and refines the input into a valid mesh of `expectedVolume`.
-void expectRefinement(FilterRun& run, double expectedVolume)
-{
-  run.update();
-  const std::string& name = run.CaseName;
-  CGMESH_CHECK(run.UpdateResult == 1 && run.Messages->Errors == 0,
-    name << ": the run failed: " << run.Messages->Text);
-  vtkUnstructuredGrid* output = run.output();
-  CGMESH_CHECK(output->GetNumberOfCells() > run.Input->GetNumberOfCells(),
-    name << ": " << run.Input->GetNumberOfCells() << " -> " << output->GetNumberOfCells()
-         << " cells, not refined");
-  if (output->GetNumberOfCells() > 0)
-  {
-    checkValidMesh(output, expectedVolume, name);
-  }
-}
+using namespace cgmesh_test;
 
 //------------------------------------------------------------------------------
 // Input meshes
-
-std::string typeName(int type)
-{
-  vtkSmartPointer<vtkDataArray> array;
-  array.TakeReference(vtkDataArray::CreateDataArray(type));
-  return array->GetDataTypeAsString();
-}
-
-Vector pointOf(vtkUnstructuredGrid* grid, vtkIdType pointId)
-{
-  Vector point;
-  grid->GetPoint(pointId, point.data());
-  return point;
-}
 
 Vector cellCentroid(vtkUnstructuredGrid* grid, vtkIdType cellId)
 {
@@ -213,11 +49,6 @@ Vector cellCentroid(vtkUnstructuredGrid* grid, vtkIdType cellId)
       centroid[axis] += point[axis] / static_cast<double>(count);
   }
   return centroid;
-}
-
-double linearValue(const Vector& point)
-{
-  return point[0] + 2 * point[1] + 3 * point[2];
 }
 
 // The point array LinearField = x + 2y + 3z that cgmesh_test::checkLinearField checks.
@@ -645,198 +476,6 @@ void test_sizeGuard()
   expectRefinement(unlimited, 1.0);
 }
 
-//------------------------------------------------------------------------------
-// Attached data
-
-const int NumericTypes[] = { VTK_CHAR, VTK_SIGNED_CHAR, VTK_UNSIGNED_CHAR, VTK_SHORT,
-  VTK_UNSIGNED_SHORT, VTK_INT, VTK_UNSIGNED_INT, VTK_LONG, VTK_UNSIGNED_LONG, VTK_LONG_LONG,
-  VTK_UNSIGNED_LONG_LONG, VTK_FLOAT, VTK_DOUBLE, VTK_ID_TYPE };
-
-std::string arrayName(const char* kind, int type, int components)
-{
-  return std::string(kind) + "_" + typeName(type) + "_" + std::to_string(components);
-}
-
-// Component c of the point arrays: 10 (x + 2y + 3z) + c, whole numbers on the Kuhn cube of side
-// 2 (coordinates are multiples of 1/2), between 0 and 62 (in range of every type).
-double pointValue(const Vector& point, int component)
-{
-  return 10 * linearValue(point) + component;
-}
-
-// Component c of the cell arrays: a value between 0 and 99 that differs between neighbours.
-double cellValue(vtkIdType cellId, int component)
-{
-  return static_cast<double>((7 * cellId + 13 * component) % 100);
-}
-
-vtkSmartPointer<vtkDataArray> makeArray(int type, int components, const std::string& name,
-  vtkIdType tuples, const std::function<double(vtkIdType, int)>& value)
-{
-  vtkSmartPointer<vtkDataArray> array;
-  array.TakeReference(vtkDataArray::CreateDataArray(type));
-  array->SetName(name.c_str());
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
-  for (vtkIdType tuple = 0; tuple < tuples; ++tuple)
-    for (int component = 0; component < components; ++component)
-      array->SetComponent(tuple, component, value(tuple, component));
-  return array;
-}
-
-void addArraysOfEveryType(vtkUnstructuredGrid* grid)
-{
-  for (const int type : NumericTypes)
-  {
-    for (const int components : { 1, 3 })
-    {
-      grid->GetPointData()->AddArray(
-        makeArray(type, components, arrayName("Point", type, components), grid->GetNumberOfPoints(),
-          [grid](vtkIdType pointId, int component)
-          { return pointValue(pointOf(grid, pointId), component); }));
-      grid->GetCellData()->AddArray(makeArray(type, components, arrayName("Cell", type, components),
-        grid->GetNumberOfCells(), cellValue));
-    }
-  }
-  vtkNew<vtkStringArray> names;
-  names->SetName("CellName");
-  for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
-    names->InsertNextValue("cell " + std::to_string(cellId));
-  grid->GetCellData()->AddArray(names);
-}
-
-// Every child carries its parent's (ParentId) values exactly.
-void checkCellArraysCopied(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
-{
-  vtkDataArray* parentIds = output->GetCellData()->GetArray("ParentId");
-  for (int index = 0; parentIds && index < input->GetCellData()->GetNumberOfArrays(); ++index)
-  {
-    vtkAbstractArray* source = input->GetCellData()->GetAbstractArray(index);
-    vtkAbstractArray* copied = output->GetCellData()->GetAbstractArray(source->GetName());
-    CGMESH_CHECK(copied && copied->GetDataType() == source->GetDataType() &&
-        copied->GetNumberOfComponents() == source->GetNumberOfComponents() &&
-        copied->GetNumberOfTuples() == output->GetNumberOfCells(),
-      "cell array " << source->GetName() << " missing or of another type or size");
-    if (!copied || copied->GetDataType() != source->GetDataType())
-      continue;
-    const int components = source->GetNumberOfComponents();
-    vtkIdType wrongValues = 0;
-    for (vtkIdType cellId = 0; cellId < output->GetNumberOfCells(); ++cellId)
-    {
-      const auto parent = static_cast<vtkIdType>(parentIds->GetComponent(cellId, 0));
-      for (int component = 0; component < components; ++component)
-      {
-        const bool same = copied->GetVariantValue(cellId * components + component) ==
-          source->GetVariantValue(parent * components + component);
-        wrongValues += same ? 0 : 1;
-      }
-    }
-    CGMESH_CHECK(wrongValues == 0,
-      "cell array " << source->GetName() << ": " << wrongValues << " values not copied exactly");
-  }
-}
-
-// Interpolated values of a point array against 10 (x + 2y + 3z) + c: floating-point types to
-// rounding error, integer types rounded to within 1.
-void checkPointArray(vtkUnstructuredGrid* output, int type, int components)
-{
-  const std::string name = arrayName("Point", type, components);
-  vtkDataArray* array = output->GetPointData()->GetArray(name.c_str());
-  CGMESH_CHECK(array && array->GetDataType() == type &&
-      array->GetNumberOfComponents() == components &&
-      array->GetNumberOfTuples() == output->GetNumberOfPoints(),
-    "point array " << name << " missing or of another type or size");
-  if (!array || array->GetDataType() != type)
-    return;
-  const bool integral = type != VTK_FLOAT && type != VTK_DOUBLE;
-  const double tolerance = type == VTK_DOUBLE ? 1e-12 : type == VTK_FLOAT ? 1e-5 : 1.0;
-  vtkIdType wrongValues = 0;
-  vtkIdType fractionalValues = 0;
-  for (vtkIdType pointId = 0; pointId < output->GetNumberOfPoints(); ++pointId)
-  {
-    const Vector point = pointOf(output, pointId);
-    for (int component = 0; component < components; ++component)
-    {
-      const double value = array->GetComponent(pointId, component);
-      wrongValues += std::abs(value - pointValue(point, component)) <= tolerance ? 0 : 1;
-      fractionalValues += integral && value != std::round(value) ? 1 : 0;
-    }
-  }
-  CGMESH_CHECK(wrongValues == 0,
-    "point array " << name << ": " << wrongValues << " values off the linear field");
-  CGMESH_CHECK(fractionalValues == 0, "point array " << name << ": fractional values");
-}
-
-// An integer point array left a labelling: a point where an input point was keeps its value;
-// a new one, between points whose values all differ on this field, gets 0.
-void checkPointLabels(
-  vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, int type, int components)
-{
-  const std::string name = arrayName("Point", type, components);
-  vtkDataArray* before = input->GetPointData()->GetArray(name.c_str());
-  vtkDataArray* after = output->GetPointData()->GetArray(name.c_str());
-  CGMESH_CHECK(
-    after && after->GetDataType() == type && after->GetNumberOfComponents() == components,
-    "point array " << name << " missing or of another type");
-  if (!after || !before)
-    return;
-  std::map<std::array<double, 3>, vtkIdType> inputPointAt;
-  for (vtkIdType pointId = 0; pointId < input->GetNumberOfPoints(); ++pointId)
-  {
-    const Vector point = pointOf(input, pointId);
-    inputPointAt[{ point[0], point[1], point[2] }] = pointId;
-  }
-  vtkIdType wrongValues = 0, newPoints = 0;
-  for (vtkIdType pointId = 0; pointId < output->GetNumberOfPoints(); ++pointId)
-  {
-    const Vector point = pointOf(output, pointId);
-    const auto found = inputPointAt.find({ point[0], point[1], point[2] });
-    newPoints += found == inputPointAt.end() ? 1 : 0;
-    for (int component = 0; component < components; ++component)
-    {
-      const double expected =
-        found == inputPointAt.end() ? 0.0 : before->GetComponent(found->second, component);
-      wrongValues += after->GetComponent(pointId, component) == expected ? 0 : 1;
-    }
-  }
-  CGMESH_CHECK(newPoints > 0, "point array " << name << ": no new point to check");
-  CGMESH_CHECK(wrongValues == 0,
-    "point array " << name << ": " << wrongValues << " values not kept as labels");
-}
-
-void test_attachedData()
-{
-  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(2);
-  addArraysOfEveryType(input);
-  // Integer point arrays are labels unless named for interpolation: both ways are checked.
-  std::string integerPointArrays;
-  for (const int type : NumericTypes)
-    for (const int components : { 1, 3 })
-      if (type != VTK_FLOAT && type != VTK_DOUBLE)
-        integerPointArrays +=
-          (integerPointArrays.empty() ? "" : ",") + arrayName("Point", type, components);
-  for (const bool interpolated : { true, false })
-  {
-    FilterRun run(input, interpolated ? "arrays of every type" : "integer point labels");
-    run.Filter->SetNumberOfIterations(2);
-    run.Filter->SetEdgeLengthFactor(0.25);
-    run.Filter->SetInterpolatedPointArrays(interpolated ? integerPointArrays.c_str() : "");
-    expectRefinement(run, 1.0);
-    vtkUnstructuredGrid* output = run.output();
-    if (output->GetNumberOfCells() == 0)
-      return;
-    CGMESH_CHECK(output->GetNumberOfPoints() > 2 * input->GetNumberOfPoints(), "few new points");
-    cgmesh_test::checkDataTransfer(input, output);
-    checkCellArraysCopied(input, output);
-    for (const int type : NumericTypes)
-      for (const int components : { 1, 3 })
-        if (interpolated || type == VTK_FLOAT || type == VTK_DOUBLE)
-          checkPointArray(output, type, components);
-        else
-          checkPointLabels(input, output, type, components);
-  }
-}
-
 } // namespace
 
 int main()
@@ -856,7 +495,6 @@ int main()
   test_badRegionArrays();
   test_extremeScales();
   test_sizeGuard();
-  test_attachedData();
   if (cgmesh_test::FailureCount > 0)
   {
     std::cerr << cgmesh_test::FailureCount << " checks failed\n";

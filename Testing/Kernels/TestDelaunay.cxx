@@ -4,12 +4,12 @@
 #include "AdaptationDriver.h"
 #include "Core/Geometry.h"
 #include "CubeGenerator.h"
+#include "MeshChecks.h"
 #include "Refinement/TemplateTable.h"
 #include "Refinement/TetGenRefiner.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
 #include "TetGenWorkers.h"
-#include "Validation/MeshValidation.h"
 
 #define TETLIBRARY
 #include <tetgen.h>
@@ -71,22 +71,8 @@ AdaptationResult run(const TetMesh& input, const AdaptationOptions& options)
 
 void checkConserved(const TetMesh& input, const AdaptationResult& result)
 {
-  const MeshReport before = inspectMesh(input);
-  const MeshReport after = inspectMesh(result.mesh);
-  if (!after.isValid())
-  {
-    std::cerr << after.describeProblems();
-  }
-  CHECK(after.isValid());
+  cgmesh_test::checkValidAndConserving(input, result.mesh);
   CHECK(result.mesh.numberOfTets() > 4 * input.numberOfTets());
-  CHECK_CLOSE(after.volume, before.volume, 1e-12);
-  CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
-  CHECK_CLOSE(after.regionInterfaceArea, before.regionInterfaceArea, 1e-12);
-  CHECK_EQUAL(after.regionVolumes.size(), before.regionVolumes.size());
-  for (const auto& region : before.regionVolumes)
-  {
-    CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
-  }
   // No edge of rounding-noise length (TetGen can leave such point clusters; they are refused).
   double shortest = HUGE_VAL;
   for (const Tet& tet : result.mesh.tets)
