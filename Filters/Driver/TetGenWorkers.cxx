@@ -1,5 +1,7 @@
 #include "TetGenWorkers.h"
 
+#include "SocketTransfer.h"
+
 #define TETLIBRARY
 #include <tetgen.h>
 
@@ -10,11 +12,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
 #include <new>
 #include <sys/socket.h>
 #include <sys/time.h>
-#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
@@ -22,48 +22,6 @@ namespace cgmesh
 {
 namespace
 {
-
-// Blocking full-buffer transfers on a stream socket. MSG_NOSIGNAL: a dead peer must not raise
-// SIGPIPE in the host process.
-bool sendAll(int socket, const void* data, std::size_t size)
-{
-  const char* bytes = static_cast<const char*>(data);
-  while (size > 0)
-  {
-    const ssize_t sent = ::send(socket, bytes, size, MSG_NOSIGNAL);
-    if (sent < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (sent <= 0)
-    {
-      return false;
-    }
-    bytes += sent;
-    size -= static_cast<std::size_t>(sent);
-  }
-  return true;
-}
-
-bool receiveAll(int socket, void* data, std::size_t size)
-{
-  char* bytes = static_cast<char*>(data);
-  while (size > 0)
-  {
-    const ssize_t received = ::recv(socket, bytes, size, 0);
-    if (received < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (received <= 0)
-    {
-      return false;
-    }
-    bytes += received;
-    size -= static_cast<std::size_t>(received);
-  }
-  return true;
-}
 
 // A message is a sequence of length-prefixed arrays.
 template <typename T>
@@ -260,6 +218,7 @@ std::vector<int> partitionsToKill()
 
 TetGenWorkerPool::TetGenWorkerPool(int workers)
   : Workers(workerCount(workers))
+  , Spawner(serveRequests, static_cast<int>(workerCount(workers)))
   , KillPartitions(partitionsToKill())
 {
   for (Worker& worker : this->Workers)
@@ -272,76 +231,27 @@ TetGenWorkerPool::~TetGenWorkerPool()
 {
   for (Worker& worker : this->Workers)
   {
-    this->stop(worker, false);
+    this->stop(worker, false); // the worker reads end of input and leaves; the spawner reaps it
   }
 }
 
 bool TetGenWorkerPool::start(Worker& worker)
 {
-  std::lock_guard<std::mutex> lock(this->Forking);
-  int sockets[2];
-  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sockets) != 0)
-  {
-    return false;
-  }
-  const pid_t process = ::fork();
-  if (process < 0)
-  {
-    ::close(sockets[0]);
-    ::close(sockets[1]);
-    return false;
-  }
-  if (process == 0)
-  {
-    // Holding another worker's socket open would keep that worker from seeing end of input.
-    for (const Worker& other : this->Workers)
-    {
-      if (other.socket >= 0)
-      {
-        ::close(other.socket);
-      }
-    }
-    ::close(sockets[0]);
-    // TetGen's assertion messages would reach the user's terminal for failures the host reports
-    // itself, and often recovers from by a second attempt.
-    const int devnull = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-    if (devnull >= 0)
-    {
-      ::dup2(devnull, STDERR_FILENO);
-      ::close(devnull);
-    }
-    serveRequests(sockets[1]);
-  }
-  ::close(sockets[1]);
-  worker.process = process;
-  worker.socket = sockets[0];
-  return true;
+  return this->Spawner.spawn(worker.socket, worker.process);
 }
 
 void TetGenWorkerPool::stop(Worker& worker, bool kill)
 {
   if (kill && worker.process > 0)
   {
-    ::kill(worker.process, SIGKILL);
+    this->Spawner.kill(worker.process);
   }
+  if (worker.socket >= 0)
   {
-    // Under the fork lock: a child forked meanwhile would otherwise close this descriptor
-    // number after its reuse, possibly as its own new socket.
-    std::lock_guard<std::mutex> lock(this->Forking);
-    if (worker.socket >= 0)
-    {
-      ::close(worker.socket); // the worker reads end of input and leaves
-      worker.socket = -1;
-    }
+    ::close(worker.socket);
   }
-  if (worker.process > 0)
-  {
-    int status = 0;
-    while (::waitpid(worker.process, &status, 0) < 0 && errno == EINTR)
-    {
-    }
-    worker.process = -1;
-  }
+  worker.socket = -1;
+  worker.process = -1;
 }
 
 std::string TetGenWorkerPool::run(

@@ -6,9 +6,12 @@
 // and the library is built with assertions, which abort the whole process on some degenerate
 // inputs (seen with -Y and a volume bound on valid partitions). A worker process has TetGen's
 // globals to itself, and when it dies the call simply fails: the partition falls back to
-// templates and the worker is replaced.
+// templates and the worker is replaced. Workers are forked by a WorkerSpawner, never by the
+// host's threads.
 #ifndef cgmesh_TetGenWorkers_h
 #define cgmesh_TetGenWorkers_h
+
+#include "WorkerSpawner.h"
 
 #include <mutex>
 #include <string>
@@ -23,7 +26,8 @@ namespace cgmesh
 class TetGenWorkerPool
 {
 public:
-  // Starts `workers` processes, at most one per core (forked now, from the calling thread).
+  // Starts `workers` worker processes, at most one per core, and the spawner that forks them and
+  // their replacements (forked now, from the calling thread).
   explicit TetGenWorkerPool(int workers);
   ~TetGenWorkerPool();
   TetGenWorkerPool(const TetGenWorkerPool&) = delete;
@@ -46,14 +50,14 @@ private:
   struct Worker
   {
     pid_t process = -1;
-    int socket = -1; // changed under Forking only: a forking thread reads every worker's
-    std::mutex busy; // one request at a time
+    int socket = -1;
+    std::mutex busy; // one request at a time; process and socket change only under it
   };
   bool start(Worker& worker);
   void stop(Worker& worker, bool kill);
 
   std::vector<Worker> Workers;
-  std::mutex Forking; // a new worker must close every other worker's socket it inherits
+  WorkerSpawner Spawner; // destroyed before Workers: it kills and reaps what is left of them
   std::vector<int> KillPartitions; // sorted; see KillPartitionsVariable
 };
 
