@@ -28,8 +28,8 @@ install(
   DESTINATION "${CMAKE_INSTALL_DOCDIR}/examples"
   COMPONENT runtime)
 
-# ParaView's VTK is not on CMake's default search path (PLATFORM.md): the config file looks for
-# the VTK this project was built against first.
+# ParaView's VTK is not on CMake's default search path (Debian installs it under ParaView's
+# prefix): the config file looks for the VTK this project was built against first.
 set(CGMESH_VTK_DIR "${VTK_DIR}")
 set(CGMESH_PLUGIN_SUBDIRECTORY
   "paraview-${ParaView_VERSION_MAJOR}.${ParaView_VERSION_MINOR}/plugins/CoarseGrainedMesher")

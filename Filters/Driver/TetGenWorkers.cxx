@@ -15,6 +15,7 @@
 #include <new>
 #include <sys/socket.h>
 #include <sys/time.h>
+#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
@@ -153,7 +154,7 @@ enum RequestKind : std::int32_t
     }
     if (kind == DieAfterReading)
     {
-      ::raise(SIGKILL);
+      std::abort(); // what a failed assertion inside TetGen does
     }
     try
     {
@@ -214,6 +215,37 @@ std::vector<int> partitionsToKill()
   return partitions;
 }
 
+// How a worker that broke off an exchange ended, from its wait status (-1: not known).
+std::string describeWorkerEnd(int status)
+{
+  if (status != -1 && WIFSIGNALED(status))
+  {
+    const int signal = WTERMSIG(status);
+    const char* name = sigabbrev_np(signal);
+    const std::string which = name ? std::string("SIG") + name : "signal " + std::to_string(signal);
+    switch (signal)
+    {
+      case SIGABRT:
+        return "TetGen aborted on this partition, " + which;
+      case SIGSEGV:
+      case SIGBUS:
+      case SIGFPE:
+      case SIGILL:
+        return "TetGen crashed on this partition, " + which;
+      case SIGKILL:
+        return "killed by SIGKILL, as by the system when memory runs out";
+      default:
+        return "ended by " + which;
+    }
+  }
+  if (status != -1 && WIFEXITED(status))
+  {
+    return "it exited with status " + std::to_string(WEXITSTATUS(status)) +
+      " after a broken exchange";
+  }
+  return "its exchange with the host broke off";
+}
+
 } // namespace
 
 TetGenWorkerPool::TetGenWorkerPool(int workers)
@@ -240,18 +272,16 @@ bool TetGenWorkerPool::start(Worker& worker)
   return this->Spawner.spawn(worker.socket, worker.process);
 }
 
-void TetGenWorkerPool::stop(Worker& worker, bool kill)
+int TetGenWorkerPool::stop(Worker& worker, bool kill)
 {
-  if (kill && worker.process > 0)
-  {
-    this->Spawner.kill(worker.process);
-  }
+  const int status = kill && worker.process > 0 ? this->Spawner.kill(worker.process) : -1;
   if (worker.socket >= 0)
   {
     ::close(worker.socket);
   }
   worker.socket = -1;
   worker.process = -1;
+  return status;
 }
 
 std::string TetGenWorkerPool::run(
@@ -301,10 +331,13 @@ std::string TetGenWorkerPool::run(
   }
   // The worker died (an assertion in TetGen aborts it), hung, or the exchange broke: replace it.
   const bool timedOut = errno == EAGAIN || errno == EWOULDBLOCK;
-  this->stop(worker, true);
-  return timedOut ? "TetGen took longer than " + std::to_string(limit.tv_sec) +
-      " s on this partition and was stopped"
-                  : "the TetGen process stopped unexpectedly (TetGen aborted on this partition)";
+  const int status = this->stop(worker, true);
+  if (timedOut)
+  {
+    return "TetGen took longer than " + std::to_string(limit.tv_sec) +
+      " s on this partition and was stopped";
+  }
+  return "the TetGen process stopped unexpectedly (" + describeWorkerEnd(status) + ")";
 }
 
 } // namespace cgmesh

@@ -42,8 +42,8 @@ public:
 
   // Test hook: the environment variable CGMESH_TEST_KILL_TETGEN_PARTITIONS, a comma-separated
   // list of partition ids, read once when the pool starts. A worker that receives a call for one
-  // of them kills itself with SIGKILL once it has read the request, as an abort inside TetGen
-  // would end it; the host sees a dead worker, the call fails and the worker is replaced.
+  // of them aborts once it has read the request, as a failed assertion inside TetGen ends it; the
+  // host sees a dead worker, the call fails and the worker is replaced.
   static constexpr const char* KillPartitionsVariable = "CGMESH_TEST_KILL_TETGEN_PARTITIONS";
 
 private:
@@ -54,7 +54,7 @@ private:
     std::mutex busy; // one request at a time; process and socket change only under it
   };
   bool start(Worker& worker);
-  void stop(Worker& worker, bool kill);
+  int stop(Worker& worker, bool kill); // the wait status when it killed, else -1
 
   std::vector<Worker> Workers;
   WorkerSpawner Spawner; // destroyed before Workers: it kills and reaps what is left of them

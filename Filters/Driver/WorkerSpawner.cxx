@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,7 +21,7 @@ namespace
 enum RequestKind : std::int32_t
 {
   Spawn = 1, // reply: the worker's process id, with the host's socket end attached (-1: none)
-  Kill = 2   // reply: 1 once the worker is reaped
+  Kill = 2   // reply: the worker's wait status once it is reaped (-1: not one of its workers)
 };
 
 struct Request
@@ -98,27 +99,35 @@ bool receiveValue(int channel, std::int32_t& value, int& descriptor)
   return true;
 }
 
-// The spawner's bookkeeping: the workers it forked and has not reaped, in a fixed array allocated
-// by the host before the fork (the spawner itself calls no allocator).
-struct LiveWorkers
+// The spawner's bookkeeping: the workers it forked whose end the host has not yet been told, in a
+// fixed array allocated by the host before the fork (the spawner itself calls no allocator). A
+// worker that left by itself is reaped at once and its slot keeps its wait status until the host
+// asks (kill), so the host learns how it ended and a reused process id is never signalled.
+struct WorkerSlot
 {
-  pid_t* process;
+  pid_t process;
+  int status;
+  bool ended;
+};
+
+struct Workers
+{
+  WorkerSlot* slot;
   int capacity;
   int count = 0;
 
-  void remove(int index) { this->process[index] = this->process[--this->count]; }
   int find(pid_t worker) const
   {
     for (int i = 0; i < this->count; ++i)
     {
-      if (this->process[i] == worker)
+      if (this->slot[i].process == worker)
       {
         return i;
       }
     }
     return -1;
   }
-  // Reaps the workers that have left by themselves, without waiting.
+  void add(pid_t worker) { this->slot[this->count++] = WorkerSlot{ worker, 0, false }; }
   void reapFinished()
   {
     int status = 0;
@@ -128,19 +137,25 @@ struct LiveWorkers
       const int index = this->find(gone);
       if (index >= 0)
       {
-        this->remove(index);
+        this->slot[index].status = status;
+        this->slot[index].ended = true;
       }
     }
   }
-  void killAndReap(int index)
+  // Ends the worker in slot `index` if it still runs, frees the slot and returns its wait status.
+  int release(int index)
   {
-    const pid_t worker = this->process[index];
-    ::kill(worker, SIGKILL);
-    int status = 0;
-    while (::waitpid(worker, &status, 0) < 0 && errno == EINTR)
+    WorkerSlot& worker = this->slot[index];
+    if (!worker.ended)
     {
+      ::kill(worker.process, SIGKILL);
+      while (::waitpid(worker.process, &worker.status, 0) < 0 && errno == EINTR)
+      {
+      }
     }
-    this->remove(index);
+    const int status = worker.status;
+    worker = this->slot[--this->count];
+    return status;
   }
 };
 
@@ -169,8 +184,24 @@ int keepOnlyChannel(int channel)
   return kept;
 }
 
+// A worker that crashes or aborts inside TetGen simply dies: the host sees the death and reports
+// it. Handlers the host installed for these signals (a crash reporter, a sanitizer's or fuzzer's
+// report writer) would otherwise run in the worker and report the host as crashed, and a core file
+// per TetGen abort would only fill the disk.
+void restoreDeadlySignals()
+{
+  const rlimit noCore = { 0, 0 };
+  ::setrlimit(RLIMIT_CORE, &noCore);
+  struct sigaction defaultAction = {};
+  defaultAction.sa_handler = SIG_DFL;
+  for (int signal : { SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL })
+  {
+    ::sigaction(signal, &defaultAction, nullptr);
+  }
+}
+
 [[noreturn]] void serveSpawnRequests(
-  int channel, WorkerSpawner::WorkerMain workerMain, LiveWorkers live)
+  int channel, WorkerSpawner::WorkerMain workerMain, Workers live)
 {
   channel = keepOnlyChannel(channel);
   // Reaping needs the default disposition: with SIGCHLD ignored (inherited from a host that
@@ -195,6 +226,7 @@ int keepOnlyChannel(int channel)
         {
           ::close(channel);
           ::close(ends[0]);
+          restoreDeadlySignals();
           workerMain(ends[1]);
           _exit(1);
         }
@@ -202,7 +234,7 @@ int keepOnlyChannel(int channel)
       }
       if (worker > 0)
       {
-        live.process[live.count++] = worker;
+        live.add(worker);
         answered = sendValue(channel, worker, ends[0]);
       }
       else
@@ -217,11 +249,7 @@ int keepOnlyChannel(int channel)
     else if (request.kind == Kill)
     {
       const int index = live.find(request.process);
-      if (index >= 0)
-      {
-        live.killAndReap(index);
-      }
-      answered = sendValue(channel, 1, -1);
+      answered = sendValue(channel, index >= 0 ? live.release(index) : -1, -1);
     }
     if (!answered)
     {
@@ -231,7 +259,7 @@ int keepOnlyChannel(int channel)
   // The host has gone or ended the pool: no worker outlives the spawner.
   while (live.count > 0)
   {
-    live.killAndReap(live.count - 1);
+    live.release(live.count - 1);
   }
   _exit(0);
 }
@@ -245,13 +273,13 @@ WorkerSpawner::WorkerSpawner(WorkerMain workerMain, int maximumWorkers)
   {
     return;
   }
-  std::vector<pid_t> slots(static_cast<std::size_t>(std::max(maximumWorkers, 1)));
+  std::vector<WorkerSlot> slots(static_cast<std::size_t>(std::max(maximumWorkers, 1)));
   const pid_t process = ::fork();
   if (process == 0)
   {
     ::close(ends[0]);
     serveSpawnRequests(
-      ends[1], workerMain, LiveWorkers{ slots.data(), static_cast<int>(slots.size()) });
+      ends[1], workerMain, Workers{ slots.data(), static_cast<int>(slots.size()) });
   }
   ::close(ends[1]);
   if (process < 0)
@@ -302,16 +330,22 @@ bool WorkerSpawner::spawn(int& socket, pid_t& process)
   return true;
 }
 
-void WorkerSpawner::kill(pid_t process)
+int WorkerSpawner::kill(pid_t process)
 {
   std::lock_guard<std::mutex> lock(this->Requests);
   const Request request{ Kill, static_cast<std::int32_t>(process) };
-  std::int32_t done = 0;
+  std::int32_t status = -1;
   int descriptor = -1;
-  if (this->Channel >= 0 && sendAll(this->Channel, &request, sizeof(request)))
+  if (this->Channel < 0 || !sendAll(this->Channel, &request, sizeof(request)) ||
+    !receiveValue(this->Channel, status, descriptor))
   {
-    receiveValue(this->Channel, done, descriptor);
+    return -1;
   }
+  if (descriptor >= 0)
+  {
+    ::close(descriptor);
+  }
+  return status;
 }
 
 } // namespace cgmesh

@@ -34,10 +34,11 @@ public:
   // process id; false if the spawner is gone or could not fork. Safe from any thread.
   bool spawn(int& socket, pid_t& process);
 
-  // Kills a worker this spawner started and waits until it is reaped. Only the spawner, its
-  // parent, kills: a process id the host kept could already name an unrelated process once a dead
-  // worker was reaped. Safe from any thread.
-  void kill(pid_t process);
+  // Kills a worker this spawner started (unless it has ended by itself), waits until it is reaped
+  // and returns its wait status (waitpid's), or -1 when the process is not one of its workers or
+  // the spawner is gone. Only the spawner, the workers' parent, kills: a process id the host kept
+  // could already name an unrelated process once a dead worker was reaped. Safe from any thread.
+  int kill(pid_t process);
 
 private:
   int Channel = -1; // the host's end of the request socket

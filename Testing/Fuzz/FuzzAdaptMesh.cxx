@@ -15,6 +15,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <string>
+#include <vector>
 
 using namespace cgmesh;
 
@@ -157,6 +159,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       input.sizes.push_back(byte == 255 ? -1.0 : byte == 254 ? 0.0 : 0.1 + byte / 255.0);
     }
     options.sizeGradation = 1.0 + 2.0 * bytes.unit();
+  }
+  // Refinement restricted to region lists (ids present, absent, or text that is no list) and to
+  // boxes (inside, around, outside or inverted against the unit cube, or malformed), one run in
+  // four each.
+  if (bytes.next() % 4 == 0)
+  {
+    options.refinementRegions = std::vector<const char*>{ "-40", "-3,34", "34,-40,99", "7", "",
+      "2,,x", "-3", " 34 , -3 " }[bytes.next() % 8];
+  }
+  if (bytes.next() % 4 == 0)
+  {
+    if (bytes.next() % 8 == 0)
+    {
+      options.refinementBox = std::vector<const char*>{ "0,0,0,1,1", "a,b,c,d,e,f", "0,0,0,1,1,1,1",
+        "nan,0,0,1,1,1" }[bytes.next() % 4];
+    }
+    else
+    {
+      std::string box;
+      for (int k = 0; k < 6; ++k)
+      {
+        box += (k ? "," : "") + std::to_string(1.4 * bytes.unit() - 0.2);
+      }
+      options.refinementBox = box;
+    }
   }
 
   const bool inputValid = inspectMesh(input).isValid();

@@ -92,7 +92,8 @@ def main():
             fallbacks = [warning for warning in statistics["warnings"]
                          if warning["kind"] == "delaunay-fallback"]
             check(sorted(warning["partition"] for warning in fallbacks) == KILLED and all(
-                "the TetGen process stopped unexpectedly" in warning["text"]
+                "the TetGen process stopped unexpectedly (TetGen aborted on this partition, "
+                "SIGABRT)" in warning["text"]
                 for warning in fallbacks),
                 "%s: fallback warnings %s" % (name, fallbacks))
             for partition in KILLED:
