@@ -253,6 +253,7 @@ void collectFilterStatistics(
     summary.fallbackPartitions.begin(), summary.fallbackPartitions.end());
   statistics.tetgenPoints = summary.tetgenPoints;
   statistics.tetgenRetries = summary.tetgenRetries;
+  statistics.tetgenWithoutQualityBound = summary.tetgenWithoutQualityBound;
   statistics.partitionsPerColor = summary.partitionsPerColor;
   statistics.cellsPerColor = summary.cellsPerColor;
   statistics.colorBalance = summary.colorBalance;
@@ -321,6 +322,7 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
     stream << std::setw(24) << "volume bound" << statistics.volumeBound << "\n"
            << std::setw(24) << "tetgen points" << statistics.tetgenPoints << "\n"
            << std::setw(24) << "tetgen retries" << statistics.tetgenRetries << "\n"
+           << std::setw(24) << "tetgen without q" << statistics.tetgenWithoutQualityBound << "\n"
            << std::setw(24) << "delaunay fallbacks" << statistics.delaunayFallbacks
            << (statistics.fallbackPartitions.empty()
                   ? std::string()
@@ -385,6 +387,7 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"volumeBound\": " << statistics.volumeBound << ",\n"
        << "  \"tetgenPoints\": " << statistics.tetgenPoints << ",\n"
        << "  \"tetgenRetries\": " << statistics.tetgenRetries << ",\n"
+       << "  \"tetgenWithoutQualityBound\": " << statistics.tetgenWithoutQualityBound << ",\n"
        << "  \"delaunayFallbacks\": " << statistics.delaunayFallbacks << ",\n"
        << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ") << "],\n"
        << "  \"compression\": " << jsonString(statistics.compression) << ",\n";

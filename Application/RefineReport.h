@@ -55,6 +55,7 @@ struct RefineStatistics
   std::vector<std::int64_t> fallbackPartitions; // their partitions
   std::int64_t tetgenPoints = 0;                // Steiner points TetGen inserted
   std::int64_t tetgenRetries = 0;               // partitions TetGen needed a second attempt for
+  std::int64_t tetgenWithoutQualityBound = 0;   // of those, refined without the radius-edge bound
   bool partitionByRegion = false;
   int partitionsPerRegion = 1;
   std::string coloring;

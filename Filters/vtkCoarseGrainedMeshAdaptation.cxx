@@ -159,6 +159,8 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "IterationsRun", result.iterationsRun);
   addFieldValue(fieldData, "RefinementConverged", result.refinementConverged ? 1 : 0);
   addFieldValue(fieldData, "TetGenRetries", static_cast<double>(result.tetgenRetries));
+  addFieldValue(
+    fieldData, "TetGenWithoutQualityBound", static_cast<double>(result.tetgenWithoutQualityBound));
   addFieldValue(fieldData, "ColoringAlgorithmIndex", filter->GetColoringAlgorithm());
   // The partitioner used: Automatic resolved to METIS or Hilbert.
   addFieldValue(fieldData, "PartitionerIndex", static_cast<int>(result.plan.partitioner));

@@ -81,6 +81,7 @@ void recordReports(const std::vector<int>& members, const std::vector<TaskReport
     summary.partitionTaskSeconds[iteration * partitions + members[i]] += report.seconds;
     summary.tetgenPoints += report.delaunay.tetgenPoints;
     summary.tetgenRetries += report.delaunay.retried ? 1 : 0;
+    summary.tetgenWithoutQualityBound += report.delaunay.withoutQualityBound ? 1 : 0;
     if (report.delaunay.fellBack)
     {
       ++summary.delaunayFallbacks;

@@ -312,7 +312,9 @@ void test_tampered_tetgen_output_is_refused()
   context.squaredThreshold = interfaceLength * interfaceLength;
   TetGenWorkerPool pool(1);
 
-  auto refineWith = [&](const std::function<void(tetgenio&)>& tamper)
+  // `tamper` sees each TetGen call's switches and successful output.
+  std::vector<std::string> calls;
+  auto refineWith = [&](const std::function<void(const std::string&, tetgenio&)>& tamper)
   {
     PartitionMesh partition;
     partition.tets = mesh.tets;
@@ -322,12 +324,14 @@ void test_tampered_tetgen_output_is_refused()
     }
     PartitionRefinement refinement;
     DelaunayOutcome outcome;
+    calls.clear();
     const TetGenRunner runner = [&](const tetgenio& in, const std::string& switches, tetgenio& out)
     {
+      calls.push_back(switches);
       const std::string failure = pool.run(0, in, switches, out);
       if (failure.empty() && out.neighborlist)
       {
-        tamper(out);
+        tamper(switches, out);
       }
       return failure;
     };
@@ -337,13 +341,14 @@ void test_tampered_tetgen_output_is_refused()
     return outcome;
   };
 
-  const DelaunayOutcome untouched = refineWith([](tetgenio&) {});
+  const DelaunayOutcome untouched = refineWith([](const std::string&, tetgenio&) {});
   CHECK(!untouched.fellBack);
+  CHECK(!untouched.retried && !untouched.withoutQualityBound);
   CHECK(untouched.tetgenPoints > 0);
 
   // Tet 0 names a tet that does not name it back.
   const DelaunayOutcome oneSided = refineWith(
-    [](tetgenio& out)
+    [](const std::string&, tetgenio& out)
     {
       for (int slot = 0; slot < 4; ++slot)
       {
@@ -359,24 +364,44 @@ void test_tampered_tetgen_output_is_refused()
   CHECK(oneSided.fellBack);
   CHECK(oneSided.reason.find("inconsistent face neighbours") != std::string::npos);
 
-  // An interior face reported as hull on both sides: the boundary no longer matches.
-  const DelaunayOutcome opened = refineWith(
-    [](tetgenio& out)
+  // An interior face reported as hull on both sides: the boundary no longer matches, as when
+  // TetGen flips a kept face.
+  const auto openFace = [](tetgenio& out)
+  {
+    for (int slot = 0; slot < 4; ++slot)
     {
-      for (int slot = 0; slot < 4; ++slot)
+      const int n = out.neighborlist[slot];
+      if (n >= 0)
       {
-        const int n = out.neighborlist[slot];
-        if (n >= 0)
-        {
-          out.neighborlist[slot] = -1;
-          int* back = out.neighborlist + 4 * n;
-          std::replace(back, back + 4, 0, -1);
-          break;
-        }
+        out.neighborlist[slot] = -1;
+        int* back = out.neighborlist + 4 * n;
+        std::replace(back, back + 4, 0, -1);
+        break;
       }
-    });
+    }
+  };
+  const DelaunayOutcome opened =
+    refineWith([&](const std::string&, tetgenio& out) { openFace(out); });
   CHECK(opened.fellBack);
   CHECK(opened.reason.find("changed the partition boundary") != std::string::npos);
+  CHECK_EQUAL(calls.size(), std::size_t(4));
+
+  // Flips under the radius-edge bound only (what sliver-laden partitions show): three attempts
+  // with q fail, the fourth, without q, refines the partition.
+  const DelaunayOutcome flippedUnderQ = refineWith(
+    [&](const std::string& switches, tetgenio& out)
+    {
+      if (switches.find('q') != std::string::npos)
+      {
+        openFace(out);
+      }
+    });
+  CHECK(!flippedUnderQ.fellBack);
+  CHECK(flippedUnderQ.retried && flippedUnderQ.withoutQualityBound);
+  CHECK(flippedUnderQ.tetgenPoints > 0);
+  CHECK_EQUAL(calls.size(), std::size_t(4));
+  CHECK(calls.size() == 4 && calls[3].find('q') == std::string::npos &&
+    calls[3].find('a') != std::string::npos);
 }
 
 } // namespace

@@ -355,15 +355,31 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
   partition = std::move(refined);
 }
 
-std::string tetgenSwitches(const DelaunayParameters& parameters)
+std::string tetgenSwitches(const DelaunayParameters& parameters, bool qualityBound)
 {
   // r: refine the given mesh; Y: keep the given boundary and interface faces; M: do not merge
-  // coplanar facets; Q: quiet; n: return the face neighbours (for validation).
+  // coplanar facets; Q: quiet; n: return the face neighbours (for validation); q: the
+  // radius-edge bound, when asked; a: the volume bound.
   char switches[128];
-  std::snprintf(switches, sizeof(switches), "rYMQnq%.17ga%.17g", parameters.radiusEdgeRatio,
-    parameters.maximumVolume);
+  if (qualityBound)
+  {
+    std::snprintf(switches, sizeof(switches), "rYMQnq%.17ga%.17g", parameters.radiusEdgeRatio,
+      parameters.maximumVolume);
+  }
+  else
+  {
+    std::snprintf(switches, sizeof(switches), "rYMQna%.17g", parameters.maximumVolume);
+  }
   return switches;
 }
+
+// One TetGen call of a partition: the order the tets are handed over in, and whether the
+// radius-edge bound applies.
+struct TetGenAttempt
+{
+  TetOrder order;
+  bool qualityBound;
+};
 
 // Runs TetGen on the partition; an empty string means the partition now holds TetGen's mesh.
 std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& keptFaces,
@@ -377,16 +393,20 @@ std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& 
   // TetGen 1.5 aborts on some inputs with many coplanar and cospherical points (its symbolic
   // perturbation asserts in insphere_s), or flips a kept face among coplanar ones; the same tets
   // in another order take other insertion paths, so a failed call is tried again with the tets
-  // reversed, then strided, before falling back.
+  // reversed, then strided. On sliver-laden partitions the flips come from the radius-edge
+  // refinement itself, in every order, and never from the volume bound alone: the last attempt
+  // drops q and leaves the shapes to the improvement sweeps, before the partition falls back.
   std::string failure;
   const std::size_t count = partition.tets.size();
-  for (const TetOrder order :
-    { TetOrder::forward(count), TetOrder::reversed(count), TetOrder::strided(count) })
+  for (const TetGenAttempt attempt : { TetGenAttempt{ TetOrder::forward(count), true },
+         TetGenAttempt{ TetOrder::reversed(count), true },
+         TetGenAttempt{ TetOrder::strided(count), true },
+         TetGenAttempt{ TetOrder::forward(count), false } })
   {
     TetGenSession session(partition, context, refinement);
     tetgenio in, out;
-    session.prepareInput(in, keptFaces, order);
-    failure = runTetGen(in, tetgenSwitches(parameters), out);
+    session.prepareInput(in, keptFaces, attempt.order);
+    failure = runTetGen(in, tetgenSwitches(parameters, attempt.qualityBound), out);
     if (failure.empty())
     {
       failure = session.validate(in, out);
@@ -394,6 +414,7 @@ std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& 
     if (failure.empty())
     {
       session.adoptOutput(out, partition, refinement, outcome);
+      outcome.withoutQualityBound = !attempt.qualityBound;
       return failure;
     }
     outcome.retried = true;

@@ -38,10 +38,11 @@ using TetGenRunner =
 
 struct DelaunayOutcome
 {
-  bool fellBack = false;         // TetGen failed; the partition was template-refined instead
-  bool retried = false;          // the first TetGen call failed, a second attempt was made
-  std::string reason;            // why, when it fell back
-  std::int64_t tetgenPoints = 0; // Steiner points TetGen inserted
+  bool fellBack = false;            // TetGen failed; the partition was template-refined instead
+  bool retried = false;             // the first TetGen call failed, a second attempt was made
+  bool withoutQualityBound = false; // refined by the last attempt, without the radius-edge bound
+  std::string reason;               // why, when it fell back
+  std::int64_t tetgenPoints = 0;    // Steiner points TetGen inserted
 };
 
 // `context.squaredThreshold` must hold the squared interface edge length.
