@@ -1,5 +1,6 @@
 #include "TetGenWorkers.h"
 
+#include "Refinement/TetGenRefiner.h"
 #include "SocketTransfer.h"
 
 #define TETLIBRARY
@@ -334,7 +335,7 @@ std::string TetGenWorkerPool::run(
   const int status = this->stop(worker, true);
   if (timedOut)
   {
-    return "TetGen took longer than " + std::to_string(limit.tv_sec) +
+    return std::string(TetGenTimeLimitReason) + " " + std::to_string(limit.tv_sec) +
       " s on this partition and was stopped";
   }
   return "the TetGen process stopped unexpectedly (" + describeWorkerEnd(status) + ")";

@@ -312,9 +312,10 @@ void test_tampered_tetgen_output_is_refused()
   context.squaredThreshold = interfaceLength * interfaceLength;
   TetGenWorkerPool pool(1);
 
-  // `tamper` sees each TetGen call's switches and successful output.
+  // `tamper` sees each TetGen call's switches and successful output; a reason it returns stands
+  // for a failed call.
   std::vector<std::string> calls;
-  auto refineWith = [&](const std::function<void(const std::string&, tetgenio&)>& tamper)
+  auto refineWith = [&](const std::function<std::string(const std::string&, tetgenio&)>& tamper)
   {
     PartitionMesh partition;
     partition.tets = mesh.tets;
@@ -329,11 +330,7 @@ void test_tampered_tetgen_output_is_refused()
     {
       calls.push_back(switches);
       const std::string failure = pool.run(0, in, switches, out);
-      if (failure.empty() && out.neighborlist)
-      {
-        tamper(switches, out);
-      }
-      return failure;
+      return failure.empty() && out.neighborlist ? tamper(switches, out) : failure;
     };
     CHECK(refinePartitionDelaunay(
       partition, context, EdgeMidpointMap(), parameters, runner, refinement, outcome)
@@ -341,7 +338,8 @@ void test_tampered_tetgen_output_is_refused()
     return outcome;
   };
 
-  const DelaunayOutcome untouched = refineWith([](const std::string&, tetgenio&) {});
+  const DelaunayOutcome untouched =
+    refineWith([](const std::string&, tetgenio&) { return std::string(); });
   CHECK(!untouched.fellBack);
   CHECK(!untouched.retried && !untouched.withoutQualityBound);
   CHECK(untouched.tetgenPoints > 0);
@@ -360,6 +358,7 @@ void test_tampered_tetgen_output_is_refused()
           break;
         }
       }
+      return std::string();
     });
   CHECK(oneSided.fellBack);
   CHECK(oneSided.reason.find("inconsistent face neighbours") != std::string::npos);
@@ -380,8 +379,12 @@ void test_tampered_tetgen_output_is_refused()
       }
     }
   };
-  const DelaunayOutcome opened =
-    refineWith([&](const std::string&, tetgenio& out) { openFace(out); });
+  const DelaunayOutcome opened = refineWith(
+    [&](const std::string&, tetgenio& out)
+    {
+      openFace(out);
+      return std::string();
+    });
   CHECK(opened.fellBack);
   CHECK(opened.reason.find("changed the partition boundary") != std::string::npos);
   CHECK_EQUAL(calls.size(), std::size_t(4));
@@ -395,6 +398,7 @@ void test_tampered_tetgen_output_is_refused()
       {
         openFace(out);
       }
+      return std::string();
     });
   CHECK(!flippedUnderQ.fellBack);
   CHECK(flippedUnderQ.retried && flippedUnderQ.withoutQualityBound);
@@ -402,6 +406,13 @@ void test_tampered_tetgen_output_is_refused()
   CHECK_EQUAL(calls.size(), std::size_t(4));
   CHECK(calls.size() == 4 && calls[3].find('q') == std::string::npos &&
     calls[3].find('a') != std::string::npos);
+
+  // A call stopped at the time limit ends the attempts at once.
+  const DelaunayOutcome timedOut = refineWith([](const std::string&, tetgenio&)
+    { return std::string(TetGenTimeLimitReason) + " 30 s on this partition and was stopped"; });
+  CHECK(timedOut.fellBack);
+  CHECK(timedOut.reason.rfind(TetGenTimeLimitReason, 0) == 0);
+  CHECK_EQUAL(calls.size(), std::size_t(1));
 }
 
 } // namespace

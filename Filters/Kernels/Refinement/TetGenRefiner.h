@@ -32,7 +32,10 @@ double interfaceEdgeLengthForVolume(double maximumVolume);
 double forecastDelaunayTets(double volume, double maximumVolume);
 
 // Runs TetGen with the given switches on `in`, filling `out`; returns an empty string on success,
-// else why it failed. The driver runs the calls in worker processes (see TetGenWorkers.h).
+// else why it failed. The driver runs the calls in worker processes (see TetGenWorkers.h). A
+// call stopped for taking too long returns a reason that starts with TetGenTimeLimitReason: no
+// further attempt is made on that partition.
+constexpr const char* TetGenTimeLimitReason = "TetGen took longer than";
 using TetGenRunner =
   std::function<std::string(const tetgenio& in, const std::string& switches, tetgenio& out)>;
 
