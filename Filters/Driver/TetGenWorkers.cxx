@@ -251,7 +251,7 @@ std::string describeWorkerEnd(int status)
 
 TetGenWorkerPool::TetGenWorkerPool(int workers)
   : Workers(workerCount(workers))
-  , Spawner(serveRequests, static_cast<int>(workerCount(workers)))
+  , Spawner(serveRequests, static_cast<int>(this->Workers.size())) // declared after Workers
   , KillPartitions(partitionsToKill())
 {
   for (Worker& worker : this->Workers)

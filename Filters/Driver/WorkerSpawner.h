@@ -12,7 +12,6 @@
 
 #include <mutex>
 #include <sys/types.h>
-#include <vector>
 
 namespace cgmesh
 {

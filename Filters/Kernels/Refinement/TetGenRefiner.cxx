@@ -360,17 +360,15 @@ std::string tetgenSwitches(const DelaunayParameters& parameters, bool qualityBou
   // r: refine the given mesh; Y: keep the given boundary and interface faces; M: do not merge
   // coplanar facets; Q: quiet; n: return the face neighbours (for validation); q: the
   // radius-edge bound, when asked; a: the volume bound.
-  char switches[128];
+  std::string switches = "rYMQn";
+  char bound[64];
   if (qualityBound)
   {
-    std::snprintf(switches, sizeof(switches), "rYMQnq%.17ga%.17g", parameters.radiusEdgeRatio,
-      parameters.maximumVolume);
+    std::snprintf(bound, sizeof(bound), "q%.17g", parameters.radiusEdgeRatio);
+    switches += bound;
   }
-  else
-  {
-    std::snprintf(switches, sizeof(switches), "rYMQna%.17g", parameters.maximumVolume);
-  }
-  return switches;
+  std::snprintf(bound, sizeof(bound), "a%.17g", parameters.maximumVolume);
+  return switches + bound;
 }
 
 // One TetGen call of a partition: the order the tets are handed over in, and whether the
