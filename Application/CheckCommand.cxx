@@ -4,6 +4,7 @@
 #include "CommandLine.h"
 #include "MeshFiles.h"
 #include "Validation/MeshValidation.h"
+#include "cgmeshTriangleCells.h"
 #include "cgmeshVTKConversion.h"
 
 #include "vtkNew.h"
@@ -25,7 +26,8 @@ void printCheckUsage()
        "\n"
        "Reports counts, inverted/degenerate tetrahedra, over-shared and misoriented faces,\n"
        "unused and duplicate points, volume, boundary area and (with a region array) the\n"
-       "volume of each region. Exits with status 1 when the mesh is not valid.\n";
+       "volume of each region. Triangles (tagged faces) must be faces of the tetrahedra.\n"
+       "Exits with status 1 when the mesh is not valid.\n";
 }
 
 void printReport(const MeshReport& report, std::ostream& stream)
@@ -77,19 +79,34 @@ int runCheckCommand(const std::vector<std::string>& commandArguments)
     status = checkRegionArray(grid, arguments.regionArrayName, arguments.inputFile);
   if (!status.ok())
     return reportError(status.message());
-  const vtkIdType nonTetrahedra = countNonTetrahedra(grid);
-  if (nonTetrahedra > 0)
-    return reportError(std::to_string(nonTetrahedra) + " cells are not linear tetrahedra");
+  const vtkIdType unsupported = countUnsupportedCells(grid);
+  if (unsupported > 0)
+    return reportError(std::to_string(unsupported) +
+      " cells are neither linear tetrahedra nor triangles: " +
+      describeNonTetrahedra(grid, /*trianglesAccepted=*/true));
+  // Triangles (tagged faces) are checked against the tets; the tets are inspected alone.
+  vtkNew<vtkUnstructuredGrid> tets;
+  TriangleCells triangles;
+  separateTriangles(grid, tets, triangles);
   TetMesh mesh;
-  status = convertToTetMesh(grid, arguments.regionArrayName, mesh);
+  status = convertToTetMesh(tets, arguments.regionArrayName, mesh);
   if (!status.ok())
     return reportError(status.message());
 
   const MeshReport report = inspectMesh(mesh);
   printReport(report, std::cout);
-  if (!report.isValid())
+  const TaggedTriangleCheck triangleCheck = checkTaggedTriangles(mesh, triangles.triangles);
+  if (!triangles.triangles.empty())
+  {
+    std::cout << std::left << std::setw(28) << "triangles" << triangles.triangles.size() << "\n"
+              << std::setw(28) << "triangles on no tet face" << triangleCheck.notFaces << "\n"
+              << std::right;
+  }
+  if (!report.isValid() || triangleCheck.notFaces > 0)
   {
     std::cout << "INVALID:\n" << report.describeProblems();
+    if (triangleCheck.notFaces > 0)
+      std::cout << "  " << triangleCheck.notFaces << " triangles are no face of a tetrahedron\n";
     return FailureExitStatus;
   }
   std::cout << "valid\n";

@@ -116,7 +116,7 @@ struct OptionNames
 // and --compression.
 OptionNames refineOptionNames()
 {
-  OptionNames names{ { "--stats", "--compression" }, {} };
+  OptionNames names{ { "--stats", "--compression", "--msh-version" }, {} };
   for (const ParameterSpec& spec : parameterTable())
   {
     (spec.kind == ParameterKind::Boolean ? names.flags : names.withValue).insert(spec.flag);
@@ -364,10 +364,10 @@ Status applyParameter(
   return status;
 }
 
-// OUT's compression when --compression is not given: legacy .vtk files are never compressed.
+// OUT's compression when --compression is not given: only .vtu files are ever compressed.
 Compression defaultCompressionFor(const std::string& outputFile)
 {
-  return isLegacyFileName(outputFile) ? Compression::None : DefaultCompression;
+  return isXMLFileName(outputFile) ? DefaultCompression : Compression::None;
 }
 
 // --compression NAME: a .vtu writer setting; legacy .vtk files are always uncompressed.
@@ -377,9 +377,10 @@ Status parseCompression(
   if (!compressionFromName(text, compression))
     return Status::failure(
       "unknown compression '" + text + "' for --compression (use none, lz4, zlib)");
-  if (isLegacyFileName(outputFile) && compression != Compression::None)
+  if (!isXMLFileName(outputFile) && compression != Compression::None)
     return Status::failure("--compression " + text +
-      " needs a .vtu output: legacy .vtk files are written as uncompressed binary");
+      " needs a .vtu output: legacy .vtk files are written as uncompressed binary, and other "
+      "formats have no compression setting");
   return Status::success();
 }
 
@@ -392,6 +393,14 @@ Status applyRefineOption(const std::string& name, const std::string& value, Refi
   }
   if (name == "--compression")
     return parseCompression(value, parsed.outputFile, parsed.compression);
+  if (name == "--msh-version")
+  {
+    if (value != "4.1" && value != "2.2")
+      return Status::failure(
+        "unknown Gmsh format '" + value + "' for --msh-version (use 4.1 or 2.2)");
+    parsed.mshVersion = std::stod(value);
+    return Status::success();
+  }
   const ParameterSpec* spec = findParameterByFlag(name);
   if (!spec)
     return Status::failure("unknown option '" + name + "' (see --help)");

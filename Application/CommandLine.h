@@ -20,6 +20,7 @@ struct RefineArguments
   AdaptationOptions options; // the parameter table's defaults, overridden by the options given
   std::string statsFile;     // JSON statistics, written when not empty
   Compression compression = DefaultCompression;
+  double mshVersion = 4.1; // a Gmsh OUT's format: 4.1 or 2.2
 };
 
 struct GenerateArguments

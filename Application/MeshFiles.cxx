@@ -1,5 +1,6 @@
 #include "MeshFiles.h"
 
+#include "GmshFiles.h"
 #include "VTKMessages.h"
 #include "WriterCaches.h"
 
@@ -28,6 +29,7 @@ enum class FileFormat
 {
   XML,
   Legacy,
+  Gmsh, // .msh and Medit .mesh, through Gmsh's library
   Unknown
 };
 
@@ -38,12 +40,14 @@ FileFormat formatOf(const std::string& fileName)
     return FileFormat::XML;
   if (extension == ".vtk")
     return FileFormat::Legacy;
+  if (isGmshFileName(fileName))
+    return FileFormat::Gmsh;
   return FileFormat::Unknown;
 }
 
 Status unknownFormat(const std::string& fileName)
 {
-  return Status::failure("'" + fileName + "': unknown file type (use .vtu or .vtk)");
+  return Status::failure("'" + fileName + "': unknown file type (use .vtu, .vtk, .msh or .mesh)");
 }
 
 constexpr std::pair<Compression, const char*> CompressionNames[] = { { Compression::None, "none" },
@@ -149,7 +153,13 @@ bool isLegacyFileName(const std::string& fileName)
   return formatOf(fileName) == FileFormat::Legacy;
 }
 
-Status readUnstructuredGrid(const std::string& fileName, vtkUnstructuredGrid* grid)
+bool isXMLFileName(const std::string& fileName)
+{
+  return formatOf(fileName) == FileFormat::XML;
+}
+
+Status readUnstructuredGrid(
+  const std::string& fileName, vtkUnstructuredGrid* grid, MeshFileNames* names)
 {
   const FileFormat format = formatOf(fileName);
   if (format == FileFormat::Unknown)
@@ -157,6 +167,8 @@ Status readUnstructuredGrid(const std::string& fileName, vtkUnstructuredGrid* gr
   std::error_code error;
   if (!std::filesystem::is_regular_file(fileName, error))
     return Status::failure("'" + fileName + "': no such file");
+  if (format == FileFormat::Gmsh)
+    return readGmshFile(fileName, grid, names);
 
   vtkNew<VTKMessageCollector> messages;
   vtkNew<vtkXMLUnstructuredGridReader> xmlReader;
@@ -248,20 +260,43 @@ Status checkRegionArray(
 Status writeUnstructuredGrid(
   vtkUnstructuredGrid* grid, const std::string& fileName, Compression compression)
 {
+  WriteOptions options;
+  options.compression = compression;
+  return writeUnstructuredGrid(grid, fileName, options);
+}
+
+Status writeUnstructuredGrid(
+  vtkUnstructuredGrid* grid, const std::string& fileName, const WriteOptions& options)
+{
   const FileFormat format = formatOf(fileName);
   if (format == FileFormat::Unknown)
     return unknownFormat(fileName);
-  const std::string temporaryName = fileName + ".partial-" + std::to_string(::getpid());
+  // The temporary keeps the extension: Gmsh chooses the format by it.
+  const std::filesystem::path path(fileName);
+  const std::string temporaryName = (path.parent_path() /
+    (path.stem().string() + ".partial-" + std::to_string(::getpid()) + path.extension().string()))
+                                      .string();
 
   vtkNew<VTKMessageCollector> messages;
   int written = 0;
-  if (format == FileFormat::XML)
+  if (format == FileFormat::Gmsh)
+  {
+    const Status status = writeGmshFile(grid, temporaryName, options);
+    if (!status.ok())
+    {
+      std::error_code ignored;
+      std::filesystem::remove(temporaryName, ignored);
+      return Status::failure("cannot write '" + fileName + "': " + status.message());
+    }
+    written = 1;
+  }
+  else if (format == FileFormat::XML)
   {
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
     messages->watch(writer);
     writer->SetFileName(temporaryName.c_str());
     writer->SetInputData(gridWithWriterCaches(grid));
-    configureXMLWriter(writer, compression);
+    configureXMLWriter(writer, options.compression);
     written = writer->Write();
   }
   else

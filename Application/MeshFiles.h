@@ -1,11 +1,15 @@
-// Reading and writing unstructured grids as XML (.vtu) or legacy (.vtk) files, chosen by extension,
-// and the checks on file names and arrays that the commands make before any long work.
+// Reading and writing unstructured grids, the format chosen by extension: VTK XML (.vtu) and legacy
+// (.vtk) files through VTK, Gmsh (.msh) and Medit (.mesh) files through Gmsh's library (see
+// GmshFiles.h); and the checks on file names and arrays that the commands make before any long
+// work.
 #ifndef cgmesh_MeshFiles_h
 #define cgmesh_MeshFiles_h
 
 #include "Core/Status.h"
 
+#include <map>
 #include <string>
+#include <utility>
 
 class vtkUnstructuredGrid;
 
@@ -31,9 +35,31 @@ bool compressionFromName(const std::string& name, Compression& compression);
 
 // True for a .vtk (legacy) file name.
 bool isLegacyFileName(const std::string& fileName);
+// True for a .vtu (XML) file name: the only format with compression settings.
+bool isXMLFileName(const std::string& fileName);
+
+// What a file says about its tags beyond the grid's cell arrays: the names of Gmsh's physical
+// groups, by (dimension, tag), so that a refined mesh is written back with them.
+struct MeshFileNames
+{
+  std::map<std::pair<int, int>, std::string> physicalNames;
+};
+
+// How a grid is written.
+struct WriteOptions
+{
+  Compression compression = DefaultCompression; // .vtu only
+  // Gmsh and Medit: the integer cell array whose values become the physical groups (see
+  // GmshFiles.h); empty: all cells in group 1.
+  std::string tagArray;
+  double mshVersion = 4.1;              // Gmsh: 4.1 or 2.2
+  const MeshFileNames* names = nullptr; // Gmsh: physical group names to write
+};
 
 // Fails with a one-line message for a missing file, an unknown extension or a reader error.
-Status readUnstructuredGrid(const std::string& fileName, vtkUnstructuredGrid* grid);
+// `names`, when given, receives the file's physical group names.
+Status readUnstructuredGrid(
+  const std::string& fileName, vtkUnstructuredGrid* grid, MeshFileNames* names = nullptr);
 
 // Fails unless `fileName` has a known extension and can be created (see checkWritableFileName):
 // checked before a long run, so that a typo does not cost a refinement.
@@ -55,6 +81,8 @@ Status checkRegionArray(
 
 // Writes to a temporary file next to `fileName` and renames it, so a failed write never leaves a
 // partial `fileName` behind. The bytes depend only on the grid and `compression`.
+Status writeUnstructuredGrid(
+  vtkUnstructuredGrid* grid, const std::string& fileName, const WriteOptions& options);
 Status writeUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& fileName,
   Compression compression = DefaultCompression);
 

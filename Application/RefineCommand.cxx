@@ -3,6 +3,7 @@
 
 #include "CommandLine.h"
 #include "Core/Stopwatch.h"
+#include "GmshFiles.h"
 #include "MeshFiles.h"
 #include "RefineChecks.h"
 #include "RefineReport.h"
@@ -30,7 +31,9 @@ void printRefineUsage()
   std::cout
     << "usage: cgmesh refine IN OUT [options]\n"
        "\n"
-       "Refines the tetrahedral mesh IN (.vtu or .vtk) and writes OUT (.vtu or .vtk).\n"
+       "Refines the tetrahedral mesh IN and writes OUT, each a VTK (.vtu, .vtk), Gmsh (.msh)\n"
+       "or Medit (.mesh) file. Triangles on boundary and material-interface faces (Gmsh\n"
+       "physical surfaces) are refined with those faces and keep their tags.\n"
        "Template: edges longer than the threshold are split by conforming templates.\n"
        "Delaunay: interface edges by templates, then TetGen (switches r Y q a) refines\n"
        "partition interiors with their boundary kept; a partition where TetGen fails is\n"
@@ -41,7 +44,14 @@ void printRefineUsage()
        "                          improvement counts, the quality summary and phase timings\n"
        "                          as JSON\n"
     << compressionHelp()
-    << "\n"
+    << "  --msh-version V         a Gmsh OUT's format: 4.1 (default) or 2.2\n"
+       "\n"
+       "Gmsh and Medit files are read and written by Gmsh's library. Their physical groups\n"
+       "(Medit references) become the cell array Tag, their elementary entities the cell\n"
+       "array Entity; an OUT of these formats takes its groups from Tag, else from meshio's\n"
+       "gmsh:physical or medit:ref, else from the region array (or the default material\n"
+       "labels), with the input's group names. Point data and other arrays stay in VTK files.\n"
+       "\n"
        "Before the input is read, OUT and FILE.json must be creatable and differ from IN and\n"
        "from each other. With the template method and several iterations, a run whose last\n"
        "iteration must exceed --max-cells is refused before the first one. A run that adds no\n"
@@ -171,6 +181,23 @@ RefineStatistics collectStatistics(const RefineArguments& arguments,
   return statistics;
 }
 
+// The cell array whose values a Gmsh or Medit OUT takes as its physical groups: Tag (read from such
+// a file), meshio's names for them, the region array, else the first default material label.
+std::string tagArrayOf(vtkUnstructuredGrid* output, const RefineArguments& arguments,
+  vtkCoarseGrainedMeshAdaptation* filter)
+{
+  for (const char* name : { TagArrayName, "gmsh:physical", "medit:ref" })
+  {
+    if (output->GetCellData()->GetArray(name))
+      return name;
+  }
+  if (!arguments.options.regionArrayName.empty() &&
+    output->GetCellData()->GetArray(arguments.options.regionArrayName.c_str()))
+    return arguments.options.regionArrayName;
+  const std::string labels = filter->GetMaterialLabelArrays();
+  return labels.substr(0, labels.find(','));
+}
+
 } // namespace
 
 int runRefineCommand(const std::vector<std::string>& commandArguments)
@@ -188,7 +215,8 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
 
   Stopwatch stopwatch;
   vtkNew<vtkUnstructuredGrid> input;
-  status = readUnstructuredGrid(arguments.inputFile, input);
+  MeshFileNames names;
+  status = readUnstructuredGrid(arguments.inputFile, input, &names);
   const double readSeconds = stopwatch.lap();
   if (status.ok())
     status = checkInput(arguments, input);
@@ -208,7 +236,12 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
   removeRunDependentFieldData(output);
 
   stopwatch.lap();
-  status = writeUnstructuredGrid(output, arguments.outputFile, arguments.compression);
+  WriteOptions writeOptions;
+  writeOptions.compression = arguments.compression;
+  writeOptions.tagArray = tagArrayOf(output, arguments, filter);
+  writeOptions.mshVersion = arguments.mshVersion;
+  writeOptions.names = &names;
+  status = writeUnstructuredGrid(output, arguments.outputFile, writeOptions);
   if (!status.ok())
     return reportError(status.message());
   const double writeSeconds = stopwatch.lap();

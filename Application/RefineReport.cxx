@@ -2,6 +2,7 @@
 
 #include "AdaptationDriver.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkCoarseGrainedMeshAdaptation.h"
 #include "vtkDataArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -72,6 +73,8 @@ void collectQualitySummaries(vtkUnstructuredGrid* output, RefineStatistics& stat
   std::vector<double> edgeRatios[2];
   for (vtkIdType cellId = 0; cellId < output->GetNumberOfCells(); ++cellId)
   {
+    if (output->GetCellType(cellId) != VTK_TETRA) // tagged triangles have no tet quality
+      continue;
     const int near = nearArray && nearArray->GetComponent(cellId, 0) != 0 ? 1 : 0;
     angles[near].push_back(angleArray->GetComponent(cellId, 0));
     edgeRatios[near].push_back(edgeRatioArray->GetComponent(cellId, 0));

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 
 namespace cgmesh
 {
@@ -23,28 +24,29 @@ namespace cgmesh
 namespace
 {
 
-// Corner ids of cell `cellId`, when every cell is a tet stored in a plain connectivity array.
-template <typename Connectivity>
-void tetCorners(const Connectivity* connectivity, vtkIdType cellId, vtkIdType corners[4])
+// Corner ids of cell `cellId` from the plain offset and connectivity arrays.
+template <typename Storage>
+void cellCorners(
+  const Storage* offsets, const Storage* connectivity, vtkIdType cellId, vtkIdType corners[4])
 {
+  const vtkIdType first = static_cast<vtkIdType>(offsets->GetValue(cellId));
   for (int k = 0; k < 4; ++k)
   {
-    corners[k] = static_cast<vtkIdType>(connectivity->GetValue(4 * cellId + k));
+    corners[k] = static_cast<vtkIdType>(connectivity->GetValue(first + k));
   }
 }
 
-// From the type array (vtkUnstructuredGrid::IsHomogeneous would build the distinct types slowly).
-bool allCellsAreTets(vtkUnstructuredGrid* grid)
+// Whether every cell is a tetrahedron or a triangle (the tagged faces that may follow the tets).
+bool onlyTetsAndTriangles(vtkUnstructuredGrid* grid)
 {
   vtkUnsignedCharArray* types = grid->GetCellTypesArray();
-  if (!types || types->GetNumberOfValues() != grid->GetNumberOfCells() ||
-    grid->GetCells()->GetNumberOfConnectivityIds() != 4 * grid->GetNumberOfCells())
+  if (!types || types->GetNumberOfValues() != grid->GetNumberOfCells())
   {
     return false;
   }
   const unsigned char* type = types->GetPointer(0);
-  return std::all_of(
-    type, type + types->GetNumberOfValues(), [](unsigned char t) { return t == VTK_TETRA; });
+  return std::all_of(type, type + types->GetNumberOfValues(),
+    [](unsigned char t) { return t == VTK_TETRA || t == VTK_TRIANGLE; });
 }
 
 } // namespace
@@ -64,10 +66,12 @@ Status addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
     grid->GetCellData()->AddArray(minDihedralAngles);
     return Status::success();
   }
-  if (!allCellsAreTets(grid) || !grid->GetPoints())
+  if (!onlyTetsAndTriangles(grid) || !grid->GetPoints())
   {
-    return Status::failure(ErrorKind::Internal, "quality arrays asked for a grid of non-tets");
+    return Status::failure(ErrorKind::Internal,
+      "quality arrays asked for a grid of other cells than tets and triangles");
   }
+  const unsigned char* types = grid->GetCellTypesArray()->GetPointer(0);
 
   // Plain arrays are read directly: through vtkPoints::GetPoint and vtkCellArray::GetCellAtId the
   // virtual calls cost more than the measures themselves.
@@ -92,14 +96,20 @@ Status addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
       const vtkIdType end = std::min(numberOfCells, (block + 1) * CellsPerBlock);
       for (vtkIdType cellId = block * CellsPerBlock; cellId < end; ++cellId)
       {
+        if (types[cellId] != VTK_TETRA)
+        {
+          edgeRatio[cellId] = std::numeric_limits<double>::quiet_NaN();
+          minDihedralAngle[cellId] = std::numeric_limits<double>::quiet_NaN();
+          continue;
+        }
         vtkIdType corners[4];
         if (cells->IsStorage64Bit())
         {
-          tetCorners(cells->GetConnectivityArray64(), cellId, corners);
+          cellCorners(cells->GetOffsetsArray64(), cells->GetConnectivityArray64(), cellId, corners);
         }
         else
         {
-          tetCorners(cells->GetConnectivityArray32(), cellId, corners);
+          cellCorners(cells->GetOffsetsArray32(), cells->GetConnectivityArray32(), cellId, corners);
         }
         const double* p[4];
         for (int k = 0; k < 4; ++k)

@@ -11,9 +11,9 @@ namespace cgmesh
 {
 
 // Adds the cell arrays EdgeRatio and MinDihedralAngle (degrees) to `grid`, which must hold only
-// linear tetrahedra, computed in blocks of cells spread over `threads` threads (0 = all cores);
-// the result does not depend on `threads`. EdgeRatio is the longest edge over the shortest, as
-// vtkMeshQuality's tet edge ratio.
+// linear tetrahedra and triangles (NaN for a triangle: the measures are of tets), computed in
+// blocks of cells spread over `threads` threads (0 = all cores); the result does not depend on
+// `threads`. EdgeRatio is the longest edge over the shortest, as vtkMeshQuality's tet edge ratio.
 // MinDihedralAngle is the smallest angle between two faces, from the face normals
 // (cgmesh::minimumDihedralAngle): vtkMeshQuality's tet MIN_ANGLE in ParaView 5.11's VTK returns
 // other values (60 degrees for a Kuhn tet whose dihedral angles are 45, 60 and 90; up to 87

@@ -39,13 +39,13 @@ vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid)
   return count;
 }
 
-std::string describeNonTetrahedra(vtkUnstructuredGrid* grid)
+std::string describeNonTetrahedra(vtkUnstructuredGrid* grid, bool trianglesAccepted)
 {
   std::map<int, vtkIdType> countOfType;
   for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
   {
     const int type = grid->GetCellType(cellId);
-    if (type != VTK_TETRA)
+    if (type != VTK_TETRA && !(trianglesAccepted && type == VTK_TRIANGLE))
     {
       ++countOfType[type];
     }
@@ -71,8 +71,11 @@ std::string describeNonTetrahedra(vtkUnstructuredGrid* grid)
   std::string advice;
   if (lowerCells)
   {
-    advice += " Triangles, lines and vertices tag boundaries, edges or points and are not "
-              "refined yet: keep the tetrahedra with ParaView's Extract Cells By Type (Tetra).";
+    advice += trianglesAccepted
+      ? " Triangles are kept and refined, but other surface, line and vertex cells are not: keep "
+        "the tetrahedra and triangles with ParaView's Extract Cells By Type (Tetra, Triangle)."
+      : " Lower-dimensional cells (boundary, edge or point tags) are not accepted here: keep the "
+        "tetrahedra with ParaView's Extract Cells By Type (Tetra).";
   }
   if (volumeCells)
   {

@@ -22,11 +22,12 @@ CGMESHFILTERS_EXPORT bool isIntegerDataType(int vtkType);
 // Number of cells of `grid` that are not linear tetrahedra (VTK_TETRA).
 CGMESHFILTERS_EXPORT vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid);
 
-// The cells of `grid` that are not linear tetrahedra, by type ("66 Triangle, 3 Line"), and what
-// to do about them: lower-dimensional cells (boundary or edge tags) are dropped with Extract Cells
-// By Type, other volume cells are split with Tetrahedralize. Empty when every cell is a
-// tetrahedron.
-CGMESHFILTERS_EXPORT std::string describeNonTetrahedra(vtkUnstructuredGrid* grid);
+// The cells of `grid` that are not linear tetrahedra (nor triangles, when `trianglesAccepted`), by
+// type ("3 Line, 2 Hexahedron"), and what to do about them: lower-dimensional cells are dropped
+// with Extract Cells By Type, other volume cells are split with Tetrahedralize. Empty when there
+// are none.
+CGMESHFILTERS_EXPORT std::string describeNonTetrahedra(
+  vtkUnstructuredGrid* grid, bool trianglesAccepted = false);
 
 // Copies points and tetrahedra of `grid` into `mesh`. When `regionArrayName` is not empty the named
 // cell array (any numeric type, first component, converted to int) becomes mesh.regions; a missing

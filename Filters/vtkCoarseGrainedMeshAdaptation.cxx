@@ -1,8 +1,9 @@
 #include "vtkCoarseGrainedMeshAdaptation.h"
 
+#include "cgmeshAdaptedGrid.h"
 #include "cgmeshMaterialLabels.h"
-#include "cgmeshPointData.h"
 #include "cgmeshTetQuality.h"
+#include "cgmeshTriangleCells.h"
 #include "cgmeshVTKConversion.h"
 
 #include "AdaptationDriver.h"
@@ -97,36 +98,6 @@ void addColorPopulation(
     array->SetValue(static_cast<vtkIdType>(color), static_cast<long>(countPerColor[color]));
   }
   fieldData->AddArray(array);
-}
-
-vtkSmartPointer<vtkIntArray> makeCellIntArray(const char* name, const std::vector<int>& values)
-{
-  auto array = vtkSmartPointer<vtkIntArray>::New();
-  array->SetName(name);
-  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  for (size_t cellId = 0; cellId < values.size(); ++cellId)
-  {
-    array->SetValue(static_cast<vtkIdType>(cellId), values[cellId]);
-  }
-  return array;
-}
-
-// Every child cell receives all cell data of the input tet it came from.
-void copyCellDataToChildren(vtkCellData* inputCellData,
-  const std::vector<cgmesh::CellId>& parentCell, vtkCellData* outputCellData)
-{
-  const vtkIdType numberOfCells = static_cast<vtkIdType>(parentCell.size());
-  outputCellData->CopyAllocate(inputCellData, numberOfCells);
-  vtkNew<vtkIdList> parentIds;
-  vtkNew<vtkIdList> childIds;
-  parentIds->SetNumberOfIds(numberOfCells);
-  childIds->SetNumberOfIds(numberOfCells);
-  for (vtkIdType childId = 0; childId < numberOfCells; ++childId)
-  {
-    parentIds->SetId(childId, static_cast<vtkIdType>(parentCell[childId]));
-    childIds->SetId(childId, childId);
-  }
-  outputCellData->CopyData(inputCellData, parentIds, childIds);
 }
 
 // The field data some readers refuse (string arrays, an array that may be empty): only with
@@ -250,58 +221,6 @@ void reportWarnings(
                                       << fallbackWarnings << " partition refinements; "
                                       << fallbackWarnings - MaximumFallbackWarnings
                                       << " of these warnings are not shown.");
-  }
-}
-
-// Comma-separated names, trimmed; empty entries dropped.
-std::vector<std::string> splitNames(const std::string& text)
-{
-  std::vector<std::string> names;
-  std::size_t start = 0;
-  while (start <= text.size())
-  {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    std::string name = text.substr(start, comma - start);
-    name.erase(0, name.find_first_not_of(" \t"));
-    name.erase(name.find_last_not_of(" \t") + 1);
-    if (!name.empty())
-    {
-      names.push_back(name);
-    }
-    start = comma + 1;
-  }
-  return names;
-}
-
-void fillOutput(vtkUnstructuredGrid* input, const cgmesh::AdaptationResult& result,
-  const std::string& interpolatedPointArrays, vtkUnstructuredGrid* output)
-{
-  cgmesh::convertToUnstructuredGrid(result.mesh, output);
-  copyCellDataToChildren(input->GetCellData(), result.parentCell, output->GetCellData());
-  if (!result.provenance.offsets.empty()) // made only for inputs with point data
-  {
-    cgmesh::transferPointData(input->GetPointData(), result.provenance,
-      splitNames(interpolatedPointArrays), output->GetPointData());
-  }
-  output->GetCellData()->AddArray(makeCellIntArray("PartitionId", result.partitionOfCell));
-  output->GetCellData()->AddArray(makeCellIntArray("ColorId", result.colorOfCell));
-  vtkNew<vtkUnsignedCharArray> nearFormerInterface;
-  nearFormerInterface->SetName("NearFormerInterface");
-  nearFormerInterface->SetNumberOfValues(static_cast<vtkIdType>(result.nearFormerInterface.size()));
-  for (size_t cellId = 0; cellId < result.nearFormerInterface.size(); ++cellId)
-  {
-    nearFormerInterface->SetValue(
-      static_cast<vtkIdType>(cellId), result.nearFormerInterface[cellId] ? 1 : 0);
-  }
-  output->GetCellData()->AddArray(nearFormerInterface);
-  if (!result.edgeLengthRatio.empty())
-  {
-    vtkNew<vtkDoubleArray> edgeLengthRatio;
-    edgeLengthRatio->SetName("EdgeLengthRatio");
-    edgeLengthRatio->SetNumberOfValues(static_cast<vtkIdType>(result.edgeLengthRatio.size()));
-    std::copy(
-      result.edgeLengthRatio.begin(), result.edgeLengthRatio.end(), edgeLengthRatio->GetPointer(0));
-    output->GetCellData()->AddArray(edgeLengthRatio);
   }
 }
 
@@ -475,12 +394,12 @@ std::string vtkCoarseGrainedMeshAdaptation::ResolveSizeArrayName(vtkUnstructured
 //------------------------------------------------------------------------------
 bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
 {
-  const vtkIdType nonTetrahedra = cgmesh::countNonTetrahedra(input);
-  if (nonTetrahedra > 0)
+  const vtkIdType unsupported = cgmesh::countUnsupportedCells(input);
+  if (unsupported > 0)
   {
-    vtkErrorMacro(<< "The input must hold only linear tetrahedra, but " << nonTetrahedra
-                  << " of its " << input->GetNumberOfCells()
-                  << " cells are of other types: " << cgmesh::describeNonTetrahedra(input));
+    vtkErrorMacro(<< "The input must hold only linear tetrahedra and triangles, but " << unsupported
+                  << " of its " << input->GetNumberOfCells() << " cells are of other types: "
+                  << cgmesh::describeNonTetrahedra(input, /*trianglesAccepted=*/true));
     return false;
   }
   if (!this->Internals->Parameters.refinementRegions.empty() &&
@@ -518,10 +437,26 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
     return 0;
   }
 
+  // Triangles tag faces of the tets: the tets are adapted, the triangles follow their faces.
+  vtkSmartPointer<vtkUnstructuredGrid> tets = input;
+  cgmesh::TriangleCells triangles;
+  const bool withTriangles = cgmesh::hasTriangles(input);
+  if (withTriangles)
+  {
+    tets = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    cgmesh::separateTriangles(input, tets, triangles);
+    if (tets->GetNumberOfCells() == 0)
+    {
+      vtkErrorMacro(<< "The input holds triangles but no tetrahedra: there is no volume mesh to "
+                       "refine.");
+      return 0;
+    }
+  }
+
   cgmesh::TetMesh inputMesh;
   const std::string regionArrayName = this->ResolveRegionArrayName(input);
   cgmesh::Status status =
-    cgmesh::convertToTetMesh(input, regionArrayName, inputMesh, this->ResolveSizeArrayName(input));
+    cgmesh::convertToTetMesh(tets, regionArrayName, inputMesh, this->ResolveSizeArrayName(input));
   if (!status.ok())
   {
     vtkErrorMacro(<< "Cannot read the input: " << status.message() << ".");
@@ -531,10 +466,10 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   this->Internals->MaterialLabelArrays.clear();
   if (regionArrayName.empty())
   {
-    const std::vector<std::string> labels = cgmesh::findMaterialLabelArrays(input);
+    const std::vector<std::string> labels = cgmesh::findMaterialLabelArrays(tets);
     if (!labels.empty())
     {
-      cgmesh::combineMaterialLabels(input, labels, inputMesh);
+      cgmesh::combineMaterialLabels(tets, labels, inputMesh);
     }
     for (const std::string& name : labels)
     {
@@ -542,10 +477,16 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
         (this->Internals->MaterialLabelArrays.empty() ? "" : ",") + name;
     }
   }
+  if (withTriangles && !(status = cgmesh::checkTriangleCells(inputMesh, triangles)).ok())
+  {
+    vtkErrorMacro(<< "Cannot refine the input's triangles: " << status.message() << ".");
+    return 0;
+  }
 
   cgmesh::AdaptationResult result;
-  status =
-    cgmesh::adaptMesh(inputMesh, makeOptions(this, this->Internals->Parameters, input), result);
+  cgmesh::AdaptationOptions options = makeOptions(this, this->Internals->Parameters, input);
+  options.pointProvenance = options.pointProvenance || withTriangles; // triangles follow it
+  status = cgmesh::adaptMesh(inputMesh, options, result);
   this->Internals->LastSummary = result.summary;
   this->Internals->LastQualitySeconds = 0;
   this->Internals->HasRun = true;
@@ -561,7 +502,12 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
     return 1;
   }
 
-  fillOutput(input, result, this->Internals->Parameters.interpolatedPointArrays, output);
+  cgmesh::AdaptedGridInput adapted;
+  adapted.grid = input;
+  adapted.mesh = &inputMesh;
+  adapted.triangles = withTriangles ? &triangles : nullptr;
+  adapted.interpolatedPointArrays = this->Internals->Parameters.interpolatedPointArrays;
+  cgmesh::fillAdaptedGrid(adapted, result, output);
   this->UpdateProgress(0.9);
   const cgmesh::Stopwatch qualityStopwatch;
   status = cgmesh::addTetQualityArrays(output, result.summary.plan.threads);

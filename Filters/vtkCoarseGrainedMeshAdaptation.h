@@ -2,7 +2,8 @@
  * @class   vtkCoarseGrainedMeshAdaptation
  * @brief   refine a tetrahedral mesh in parallel by running a serial kernel on coloured partitions
  *
- * The input (linear tetrahedra only) is partitioned with METIS into NumberOfPartitions parts, or,
+ * The input (linear tetrahedra, and triangles tagging boundary or material-interface faces of them)
+ * is partitioned with METIS into NumberOfPartitions parts, or,
  * with PartitionByRegion, along the regions of RegionArrayName into PartitionsPerRegion parts
  * each. The partition graph (partitions sharing a vertex) is coloured with ColoringAlgorithm, and
  * for each of NumberOfIterations passes the partitions of one colour are refined concurrently by
@@ -28,23 +29,23 @@
  * sweep over box-shaped partitions that cut across the refinement partitions then improves the
  * tets around the former partition interfaces too.
  *
- * The output is one conforming tetrahedral grid. Input cell data is copied to every child cell and
- * input point data is interpolated linearly onto new points. The output also holds the cell arrays
- * PartitionId, ColorId, EdgeRatio and MinDihedralAngle (vtkMeshQuality, degrees) and
- * NearFormerInterface (vtkUnsignedCharArray, 1 for a tet touching a vertex that lay on an interface
- * between refinement partitions), and field data
- * with the colour, partition and thread counts, the (interface) edge length threshold, the method
- * (MethodIndex), the partitioner used (PartitionerIndex: METIS or HILBERT), VolumeBound,
- * DelaunayFallbacks, TetGenPoints and TetGenRetries (partitions whose first TetGen call failed and
- * was made again with the tets in reverse order; all 0 for Template), IterationsRun and
- * RefinementConverged, the colouring (ColoringAlgorithmIndex), and with Diagnostics also Method and
- * ColoringAlgorithm by name and FallbackPartitions (one tuple per fallback); the colour populations
- * (PartitionsPerColor and CellsPerColor, one tuple per colour), ColorBalance (largest colour over
- * the mean, in partitions), the improvement counts (EdgeRemovals, FaceSwaps, VertexMoves) and the
- * seconds spent per phase (PrepareSeconds, PartitionSeconds, GraphSeconds, ColorSeconds,
- * HealSeconds, AdaptSeconds, ImproveSeconds, PostSeconds, MergeSeconds, QualitySeconds,
- * TotalSeconds; each second is charged to one phase only). Progress never decreases. The output
- * does not depend on NumberOfThreads.
+ * The output is one conforming tetrahedral grid, followed by the children of the input's triangles
+ * (each refined as the faces it lies on, oriented as it was). Input cell data is copied to every
+ * child cell and input point data is interpolated linearly onto new points. The output also holds
+ * the cell arrays PartitionId, ColorId, EdgeRatio and MinDihedralAngle (vtkMeshQuality, degrees)
+ * and NearFormerInterface (vtkUnsignedCharArray, 1 for a tet touching a vertex that lay on an
+ * interface between refinement partitions), and field data with the colour, partition and thread
+ * counts, the (interface) edge length threshold, the method (MethodIndex), the partitioner used
+ * (PartitionerIndex: METIS or HILBERT), VolumeBound, DelaunayFallbacks, TetGenPoints and
+ * TetGenRetries (partitions whose first TetGen call failed and was made again with the tets in
+ * reverse order; all 0 for Template), IterationsRun and RefinementConverged, the colouring
+ * (ColoringAlgorithmIndex), and with Diagnostics also Method and ColoringAlgorithm by name and
+ * FallbackPartitions (one tuple per fallback); the colour populations (PartitionsPerColor and
+ * CellsPerColor, one tuple per colour), ColorBalance (largest colour over the mean, in partitions),
+ * the improvement counts (EdgeRemovals, FaceSwaps, VertexMoves) and the seconds spent per phase
+ * (PrepareSeconds, PartitionSeconds, GraphSeconds, ColorSeconds, HealSeconds, AdaptSeconds,
+ * ImproveSeconds, PostSeconds, MergeSeconds, QualitySeconds, TotalSeconds; each second is charged
+ * to one phase only). Progress never decreases. The output does not depend on NumberOfThreads.
  */
 #ifndef vtkCoarseGrainedMeshAdaptation_h
 #define vtkCoarseGrainedMeshAdaptation_h
@@ -315,8 +316,8 @@ protected:
   std::string ResolveRegionArrayName(vtkUnstructuredGrid* input) const;
   // The size array's name, empty for none (or ParaView's "None" entry).
   std::string ResolveSizeArrayName(vtkUnstructuredGrid* input) const;
-  // Reports an error and returns false unless every input cell is a linear tetrahedron and
-  // PartitionByRegion has a region array to cut along.
+  // Reports an error and returns false unless every input cell is a linear tetrahedron or a
+  // triangle, and PartitionByRegion has a region array to cut along.
   bool CheckInput(vtkUnstructuredGrid* input);
 
   // The parameters' values, kept as the driver's options.

@@ -95,25 +95,45 @@ void test_nonTetrahedralInput()
     input->GetMTime() == inputTime && input->GetNumberOfCells() == 2, "the input was modified");
 }
 
-// A boundary triangle tagged next to the tetrahedra (as Gmsh meshes come): the error names the
-// types and points to Extract Cells By Type, not to Tetrahedralize, which would not remove it.
-void test_boundaryTriangleInput()
+// Cells other than tetrahedra and triangles (a line tagging an edge, as Gmsh meshes come): the
+// error names the types and points to Extract Cells By Type, not to Tetrahedralize, which would
+// not remove them.
+void test_lineInput()
 {
   vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(1);
-  const vtkIdType triangle[3] = { 0, 1, 2 };
-  input->InsertNextCell(VTK_TRIANGLE, 3, triangle);
+  const vtkIdType line[2] = { 0, 1 };
+  input->InsertNextCell(VTK_LINE, 2, line);
   input->GetCellData()->Initialize();
   const vtkIdType cells = input->GetNumberOfCells();
   FilterRun run(input);
   run.update();
   const std::string& messages = run.Messages->AllMessages;
-  CGMESH_CHECK(run.UpdateResult == 0 && run.outputCells() == 0, "a triangle was accepted");
+  CGMESH_CHECK(run.UpdateResult == 0 && run.outputCells() == 0, "a line was accepted");
   CGMESH_CHECK(messages.find("1 of its " + std::to_string(cells) + " cells") != std::string::npos &&
-      messages.find("1 Triangle") != std::string::npos &&
-      messages.find("Extract Cells By Type") != std::string::npos &&
+      messages.find("1 Line") != std::string::npos &&
+      messages.find("Extract Cells By Type (Tetra, Triangle)") != std::string::npos &&
       messages.find("Tetrahedralize") == std::string::npos,
-    "the error does not name the triangle and the filter that removes it: " << messages);
+    "the error does not name the line and the filter that removes it: " << messages);
   CGMESH_CHECK(input->GetNumberOfCells() == cells, "the input was modified");
+}
+
+// Triangles must tag faces of the tets: one along the cube's diagonal (no face, and degenerate) is
+// refused with the error naming its cell and points, and the input is left as it was.
+void test_triangleInput()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(2);
+  const vtkIdType tets = input->GetNumberOfCells();
+  const vtkIdType corners[3] = { 0, 13, 26 }; // a corner, the centre, the opposite corner
+  input->InsertNextCell(VTK_TRIANGLE, 3, corners);
+  FilterRun refused(input);
+  refused.update();
+  const std::string& messages = refused.Messages->AllMessages;
+  CGMESH_CHECK(refused.UpdateResult == 0 && refused.outputCells() == 0,
+    "a triangle that is no face was accepted");
+  CGMESH_CHECK(messages.find("1 of the input's 1 triangles are not faces") != std::string::npos &&
+      messages.find("cell " + std::to_string(tets) + " (points 0, 13, 26)") != std::string::npos,
+    "the error does not name the triangle: " << messages);
+  CGMESH_CHECK(input->GetNumberOfCells() == tets + 1, "the input was modified");
 }
 
 void test_missingRegionArray()
@@ -332,7 +352,8 @@ void test_coloringSetters()
 int main()
 {
   test_nonTetrahedralInput();
-  test_boundaryTriangleInput();
+  test_lineInput();
+  test_triangleInput();
   test_missingRegionArray();
   test_partitionByRegionWithoutRegionArray();
   test_regionArrayChoices();

@@ -1,0 +1,34 @@
+// The filter's output grid from an adaptation result: the tetrahedra, the children of tagged input
+// triangles after them, every input cell array carried from each cell's parent, point data through
+// provenance, and the per-cell arrays of the run (PartitionId, ColorId, NearFormerInterface,
+// EdgeLengthRatio).
+#ifndef cgmeshAdaptedGrid_h
+#define cgmeshAdaptedGrid_h
+
+#include "cgmeshTriangleCells.h"
+
+#include "AdaptationDriver.h"
+
+#include <string>
+
+class vtkUnstructuredGrid;
+
+namespace cgmesh
+{
+
+struct AdaptedGridInput
+{
+  vtkUnstructuredGrid* grid = nullptr;      // the filter's input, triangles included
+  const TetMesh* mesh = nullptr;            // its tetrahedra as adapted
+  const TriangleCells* triangles = nullptr; // null when the input has only tetrahedra
+  std::string interpolatedPointArrays;      // comma-separated integer point arrays to interpolate
+};
+
+// Fills `output`. The cells of the run's arrays that are triangles get -1 (PartitionId, ColorId),
+// 0 (NearFormerInterface) or NaN (EdgeLengthRatio): they were not refined as cells of a partition.
+void fillAdaptedGrid(
+  const AdaptedGridInput& input, const AdaptationResult& result, vtkUnstructuredGrid* output);
+
+} // namespace cgmesh
+
+#endif

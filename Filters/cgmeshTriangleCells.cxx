@@ -1,0 +1,127 @@
+#include "cgmeshTriangleCells.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <string>
+
+namespace cgmesh
+{
+
+namespace
+{
+
+// "cell 12 (points 4, 9, 7)"
+std::string describeTriangle(const TriangleCells& cells, std::size_t index)
+{
+  const Triangle& corners = cells.triangles[index];
+  return "cell " + std::to_string(cells.triangleCellIds[index]) + " (points " +
+    std::to_string(corners[0]) + ", " + std::to_string(corners[1]) + ", " +
+    std::to_string(corners[2]) + ")";
+}
+
+} // namespace
+
+vtkIdType countUnsupportedCells(vtkUnstructuredGrid* grid)
+{
+  vtkIdType count = 0;
+  for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
+  {
+    const int type = grid->GetCellType(cellId);
+    count += type != VTK_TETRA && type != VTK_TRIANGLE;
+  }
+  return count;
+}
+
+bool hasTriangles(vtkUnstructuredGrid* grid)
+{
+  for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
+  {
+    if (grid->GetCellType(cellId) == VTK_TRIANGLE)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+void separateTriangles(vtkUnstructuredGrid* grid, vtkUnstructuredGrid* tets, TriangleCells& cells)
+{
+  cells = TriangleCells();
+  vtkNew<vtkCellArray> tetCells;
+  vtkNew<vtkIdList> tetIds;
+  auto iterator = vtk::TakeSmartPointer(grid->GetCells()->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    const vtkIdType cellId = iterator->GetCurrentCellId();
+    vtkIdType count;
+    const vtkIdType* points;
+    iterator->GetCurrentCell(count, points);
+    if (grid->GetCellType(cellId) == VTK_TRIANGLE)
+    {
+      cells.triangleCellIds.push_back(cellId);
+      cells.triangles.push_back({ points[0], points[1], points[2] });
+      continue;
+    }
+    cells.tetCellIds.push_back(cellId);
+    tetIds->InsertNextId(cellId);
+    tetCells->InsertNextCell(count, points);
+  }
+  tets->Initialize();
+  tets->SetPoints(grid->GetPoints());
+  tets->GetPointData()->ShallowCopy(grid->GetPointData());
+  tets->SetCells(VTK_TETRA, tetCells);
+  vtkNew<vtkIdList> newIds;
+  newIds->SetNumberOfIds(tetIds->GetNumberOfIds());
+  for (vtkIdType k = 0; k < newIds->GetNumberOfIds(); ++k)
+  {
+    newIds->SetId(k, k);
+  }
+  tets->GetCellData()->CopyAllocate(grid->GetCellData(), tetIds->GetNumberOfIds());
+  tets->GetCellData()->CopyData(grid->GetCellData(), tetIds, newIds);
+  tets->GetFieldData()->ShallowCopy(grid->GetFieldData());
+}
+
+Status checkTriangleCells(const TetMesh& mesh, const TriangleCells& cells)
+{
+  const TaggedTriangleCheck check = checkTaggedTriangles(mesh, cells.triangles);
+  const std::string of =
+    " of the input's " + std::to_string(cells.triangles.size()) + " triangles ";
+  if (check.notFaces > 0)
+  {
+    return Status::failure(ErrorKind::InvalidInput,
+      std::to_string(check.notFaces) + of + "are not faces of its tetrahedra (the first is " +
+        describeTriangle(cells, check.firstNotFace) +
+        "); triangles tag faces of the tetrahedra and are refined with them");
+  }
+  if (check.insideRegion > 0)
+  {
+    return Status::failure(ErrorKind::InvalidInput,
+      std::to_string(check.insideRegion) + of +
+        "lie between two tetrahedra of the same material (the first is " +
+        describeTriangle(cells, check.firstInsideRegion) +
+        "); refinement keeps only the boundary and the faces between materials, so only those "
+        "can carry triangles. Give the two sides different values in the region array, or "
+        "drop those triangles");
+  }
+  return Status::success();
+}
+
+void appendTriangles(const std::vector<TriangleChild>& children, vtkUnstructuredGrid* grid)
+{
+  for (const TriangleChild& child : children)
+  {
+    const vtkIdType corners[3] = { child.corners[0], child.corners[1], child.corners[2] };
+    grid->InsertNextCell(VTK_TRIANGLE, 3, corners);
+  }
+}
+
+} // namespace cgmesh

@@ -1,0 +1,275 @@
+"""Mixed tetrahedra and triangles through `cgmesh refine`, on a mesh Gmsh makes: two stacked boxes
+and a ball inside the lower one (three physical volumes), with physical surfaces on the bottom,
+the top, the box interface and the ball's curved surface, converted to .vtu by meshio as a Gmsh
+user would. Both methods, with and without a region array: the output, read back by meshio, must
+keep every tag; each tag's triangles must cover the same surface (area and vector area conserved,
+so the orientation is kept too) with more triangles than before; every triangle must be a boundary
+or material-interface face of the output tets; every physical volume keeps its volume; 1 and 2
+threads write the same bytes; and the input errors name the offending cells."""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import meshio
+import numpy
+
+from TestCommandLine import digest, region_volumes
+
+FAILURES = []
+
+GEOMETRY = """SetFactory("OpenCASCADE");
+Box(1) = {0, 0, 0, 1, 1, 0.5};
+Box(2) = {0, 0, 0.5, 1, 1, 0.5};
+Sphere(3) = {0.5, 0.5, 0.25, 0.15};
+BooleanFragments{ Volume{1, 2, 3}; Delete; }{}
+e = 1e-3;
+ball() = Volume In BoundingBox{0.35 - e, 0.35 - e, 0.1 - e, 0.65 + e, 0.65 + e, 0.4 + e};
+lower() = Volume In BoundingBox{-e, -e, -e, 1 + e, 1 + e, 0.5 + e};
+Physical Volume("lower", 1) = {lower()};
+Physical Volume("lower", 1) -= {ball()};
+Physical Volume("upper", 2) = Volume In BoundingBox{-e, -e, 0.5 - e, 1 + e, 1 + e, 1 + e};
+Physical Volume("ball", 3) = {ball()};
+Physical Surface("bottom", 11) = Surface In BoundingBox{-e, -e, -e, 1 + e, 1 + e, e};
+Physical Surface("interface", 12) = Surface In BoundingBox{-e, -e, 0.5 - e, 1 + e, 1 + e, 0.5 + e};
+Physical Surface("ball", 13) = Surface In BoundingBox{0.35 - e, 0.35 - e, 0.1 - e, 0.65 + e, 0.65 + e, 0.4 + e};
+Physical Surface("top", 14) = Surface In BoundingBox{-e, -e, 1 - e, 1 + e, 1 + e, 1 + e};
+Mesh.MeshSizeMax = 0.12;
+"""
+
+
+def check(condition, message):
+    if not condition:
+        FAILURES.append(message)
+        print("check failed: " + message, file=sys.stderr)
+
+
+def run(cgmesh, *arguments):
+    return subprocess.run([cgmesh, *arguments], capture_output=True, text=True)
+
+
+def cells_of(mesh, cell_type, array="Tag"):
+    """(connectivity, `array` values) of every block of `cell_type`, joined."""
+    blocks = [(block.data, tags) for block, tags in zip(mesh.cells, mesh.cell_data[array])
+              if block.type == cell_type]
+    if not blocks:
+        return numpy.zeros((0, 4 if cell_type == "tetra" else 3), dtype=int), numpy.zeros(0)
+    return (numpy.concatenate([b[0] for b in blocks]),
+            numpy.concatenate([numpy.asarray(b[1]).ravel() for b in blocks]))
+
+
+def surface_figures(mesh, array):
+    """{tag: (triangle count, area, vector area)} of the triangles."""
+    triangles, tags = cells_of(mesh, "triangle", array)
+    p = mesh.points[triangles]
+    normals = 0.5 * numpy.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    areas = numpy.linalg.norm(normals, axis=1)
+    return {int(tag): (int(numpy.sum(tags == tag)), float(areas[tags == tag].sum()),
+                       normals[tags == tag].sum(axis=0)) for tag in numpy.unique(tags)}
+
+
+def volume_figures(mesh, array):
+    """{tag: volume} of the tets."""
+    tets, tags = cells_of(mesh, "tetra", array)
+    p = mesh.points[tets]
+    volumes = numpy.abs(numpy.einsum("ij,ij->i", p[:, 1] - p[:, 0],
+                                     numpy.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 0]))) / 6
+    return {int(tag): float(volumes[tags == tag].sum()) for tag in numpy.unique(tags)}
+
+
+def triangles_are_kept_faces(mesh, array):
+    """How many triangles are no face of a tet, or lie between two tets of one tag."""
+    tets, tet_tags = cells_of(mesh, "tetra", array)
+    holders = {}
+    for tet, tag in zip(tets, tet_tags):
+        for skip in range(4):
+            face = tuple(sorted(int(tet[k]) for k in range(4) if k != skip))
+            holders.setdefault(face, []).append(int(tag))
+    triangles, _ = cells_of(mesh, "triangle", array)
+    bad = 0
+    for triangle in triangles:
+        tags = holders.get(tuple(sorted(int(v) for v in triangle)), [])
+        bad += not (len(tags) == 1 or (len(tags) == 2 and tags[0] != tags[1]))
+    return bad
+
+
+def compare(before, after, description, array="Tag"):
+    """Tags, areas, vector areas and volumes of `after` (tags in `array`) against `before`."""
+    surfaces_before, surfaces_after = surface_figures(before, "Tag"), surface_figures(after, array)
+    check(sorted(surfaces_before) == sorted(surfaces_after),
+          "%s: surface tags %s, expected %s" % (description, sorted(surfaces_after),
+                                                sorted(surfaces_before)))
+    for tag, (count, area, vector) in surfaces_before.items():
+        if tag not in surfaces_after:
+            continue
+        count_after, area_after, vector_after = surfaces_after[tag]
+        check(count_after > count, "%s: tag %d has %d triangles, %d before: not refined"
+              % (description, tag, count_after, count))
+        check(abs(area_after - area) <= 1e-12 * area,
+              "%s: tag %d area %.15g, expected %.15g" % (description, tag, area_after, area))
+        check(numpy.linalg.norm(vector_after - vector) <= 1e-12 * area,
+              "%s: tag %d vector area %s, expected %s (orientation)"
+              % (description, tag, vector_after, vector))
+    volumes_before, volumes_after = volume_figures(before, "Tag"), volume_figures(after, array)
+    check(sorted(volumes_before) == sorted(volumes_after),
+          "%s: volume tags %s" % (description, sorted(volumes_after)))
+    for tag, volume in volumes_before.items():
+        check(abs(volumes_after.get(tag, 0) - volume) <= 1e-12 * volume,
+              "%s: volume of tag %d is %.15g, expected %.15g"
+              % (description, tag, volumes_after.get(tag, 0), volume))
+    bad = triangles_are_kept_faces(after, array)
+    check(bad == 0, "%s: %d triangles are no boundary or interface face" % (description, bad))
+
+
+def test_file_formats(cgmesh, gmsh, scratch, mesh):
+    """Gmsh .msh in, .msh 4.1 and 2.2 and Medit .mesh out: the tags, areas and volumes as through
+    .vtu, the physical names kept, and Gmsh itself reads every output back."""
+    msh = os.path.join(scratch, "two-volumes.msh")
+    outputs = {"msh 4.1": ("refined.msh", [], "gmsh:physical"),
+               "msh 2.2": ("refined-2.2.msh", ["--msh-version", "2.2"], "gmsh:physical"),
+               "medit": ("refined.mesh", [], "medit:ref")}
+    for description, (name, options, array) in outputs.items():
+        output = os.path.join(scratch, name)
+        result = run(cgmesh, "refine", msh, output, "--partitions", "8", "--iterations", "2",
+                     *options)
+        check(result.returncode == 0, "%s: %s" % (description, result.stderr))
+        if result.returncode != 0:
+            continue
+        compare(mesh, meshio.read(output), description, array)
+        if name.endswith(".msh"):
+            with open(output) as handle:
+                text = handle.read()
+            check(("$MeshFormat\n%s " % ("2.2" if "2.2" in options else "4.1")) in text,
+                  "%s: the file is not in that format" % description)
+            for group in ('2 11 "bottom"', '2 13 "ball"', '3 1 "lower"', '3 3 "ball"'):
+                check(group in text, "%s: physical group %s lost" % (description, group))
+        reread = os.path.join(scratch, "reread-" + name + ".msh")
+        result = subprocess.run([gmsh, output, "-0", "-o", reread], capture_output=True,
+                                text=True)
+        check(result.returncode == 0 and "Error" not in result.stdout,
+              "%s: Gmsh does not read the output: %s" % (description, result.stdout[-1500:]))
+    result = run(cgmesh, "refine", msh, os.path.join(scratch, "bad.msh"), "--msh-version", "3")
+    check(result.returncode != 0 and "--msh-version" in result.stderr,
+          "--msh-version 3 accepted: " + result.stderr)
+    result = run(cgmesh, "refine", msh, os.path.join(scratch, "bad.msh"), "--compression", "zlib")
+    check(result.returncode != 0 and "needs a .vtu output" in result.stderr,
+          "--compression for a .msh output accepted: " + result.stderr)
+
+
+def make_input(gmsh, scratch):
+    """The Gmsh mesh as a Gmsh user converts it: tets and triangles with their physical tags."""
+    geometry = os.path.join(scratch, "two-volumes.geo")
+    with open(geometry, "w") as handle:
+        handle.write(GEOMETRY)
+    msh = os.path.join(scratch, "two-volumes.msh")
+    result = subprocess.run([gmsh, geometry, "-3", "-o", msh], capture_output=True, text=True)
+    check(result.returncode == 0, "gmsh: " + result.stdout[-2000:])
+    source = meshio.read(msh)
+    blocks, tags = [], []
+    for block, physical in zip(source.cells, source.cell_data["gmsh:physical"]):
+        if block.type in ("tetra", "triangle"):
+            blocks.append(block)
+            tags.append(physical)
+    mesh = meshio.Mesh(source.points, blocks, cell_data={"Tag": tags})
+    path = os.path.join(scratch, "two-volumes.vtu")
+    mesh.write(path)
+    return path, mesh
+
+
+def test_refinement(cgmesh, scratch, path, mesh):
+    cases = {
+        "template, region array": ["--region-array", "Tag", "--iterations", "2"],
+        "template, default labels": ["--iterations", "2"],
+        "delaunay": ["--region-array", "Tag", "--method", "delaunay", "--volume-factor", "0.3"],
+    }
+    for description, options in cases.items():
+        digests = set()
+        for threads in ("1", "2"):
+            output = os.path.join(scratch, "refined-%s-%s.vtu"
+                                  % (description.replace(" ", "").replace(",", "-"), threads))
+            result = run(cgmesh, "refine", path, output, "--partitions", "8", "--threads",
+                         threads, "--compression", "zlib", *options)
+            check(result.returncode == 0, "%s: %s" % (description, result.stderr))
+            if result.returncode != 0:
+                continue
+            digests.add(digest(output))
+            checked = run(cgmesh, "check", output, "--region-array", "Tag")
+            check(checked.returncode == 0 and
+                  re.search(r"^triangles on no tet face +0$", checked.stdout, re.MULTILINE),
+                  "%s: cgmesh check: %s" % (description, checked.stdout[-1500:]))
+            if threads == "2":
+                compare(mesh, meshio.read(output), description)
+        check(len(digests) == 1, "%s: 1 and 2 threads wrote different files" % description)
+    volumes, status = region_volumes(cgmesh, path, "Tag")
+    check(status == 0 and sorted(volumes) == [1, 2, 3], "input check: %s %d" % (volumes, status))
+
+
+def expect_error(cgmesh, scratch, mesh, description, texts):
+    """`cgmesh refine` of `mesh` fails with one line naming `texts`, and writes nothing."""
+    path = os.path.join(scratch, "bad-%s.vtu" % description)
+    mesh.write(path)
+    output = os.path.join(scratch, "bad-%s-refined.vtu" % description)
+    result = run(cgmesh, "refine", path, output)
+    check(result.returncode != 0, "%s: refine succeeded" % description)
+    for text in texts:
+        check(text in result.stderr, "%s: the error does not say %r: %s"
+              % (description, text, result.stderr))
+    check(not os.path.exists(output), "%s: an output was written" % description)
+
+
+def test_errors(cgmesh, scratch, mesh):
+    tets, tet_tags = cells_of(mesh, "tetra")
+    triangles, triangle_tags = cells_of(mesh, "triangle")
+    # A triangle across a tet (three corners of two different tets): no face.
+    stray = numpy.array([[tets[0][0], tets[0][1], tets[500][2]]])
+    broken = meshio.Mesh(mesh.points, [("tetra", tets), ("triangle", numpy.vstack([triangles,
+                                                                                    stray]))],
+                         cell_data={"Tag": [tet_tags, numpy.append(triangle_tags, 99)]})
+    stray_cell = len(tets) + len(triangles)
+    expect_error(cgmesh, scratch, broken, "stray-triangle",
+                 ["1 of the input's %d triangles are not faces" % (len(triangles) + 1),
+                  "cell %d" % stray_cell])
+    # An interior face of the upper box: between two tets of one material.
+    holders = {}
+    for index, tet in enumerate(tets):
+        for skip in range(4):
+            face = tuple(sorted(int(tet[k]) for k in range(4) if k != skip))
+            holders.setdefault(face, []).append(index)
+    inner = next(face for face, held in holders.items()
+                 if len(held) == 2 and tet_tags[held[0]] == tet_tags[held[1]] == 2)
+    inside = meshio.Mesh(mesh.points, [("tetra", tets), ("triangle", numpy.vstack([triangles,
+                                                                                   [inner]]))],
+                         cell_data={"Tag": [tet_tags, numpy.append(triangle_tags, 98)]})
+    expect_error(cgmesh, scratch, inside, "inner-triangle",
+                 ["lie between two tetrahedra of the same material", "cell %d" % stray_cell])
+    lines = meshio.Mesh(mesh.points, [("tetra", tets), ("triangle", triangles),
+                                      ("line", numpy.array([[tets[0][0], tets[0][1]]]))],
+                        cell_data={"Tag": [tet_tags, triangle_tags, [7]]})
+    expect_error(cgmesh, scratch, lines, "line",
+                 ["1 Line", "Extract Cells By Type (Tetra, Triangle)"])
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--cgmesh", required=True)
+    parser.add_argument("--gmsh", default="gmsh")
+    parser.add_argument("--scratch", required=True)
+    options = parser.parse_args()
+    shutil.rmtree(options.scratch, ignore_errors=True)
+    os.makedirs(options.scratch)
+    path, mesh = make_input(options.gmsh, options.scratch)
+    if not FAILURES:
+        test_refinement(options.cgmesh, options.scratch, path, mesh)
+        test_errors(options.cgmesh, options.scratch, mesh)
+        test_file_formats(options.cgmesh, options.gmsh, options.scratch, mesh)
+    if FAILURES:
+        print("%d checks failed" % len(FAILURES), file=sys.stderr)
+        return 1
+    print("all checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
