@@ -1,6 +1,7 @@
 #include "MeshFiles.h"
 
 #include "GmshFiles.h"
+#include "TetGenFiles.h"
 #include "VTKMessages.h"
 #include "WriterCaches.h"
 
@@ -29,7 +30,8 @@ enum class FileFormat
 {
   XML,
   Legacy,
-  Gmsh, // .msh and Medit .mesh, through Gmsh's library
+  Gmsh,   // .msh and Medit .mesh, through Gmsh's library
+  TetGen, // .node/.ele/.face, through TetGen's library
   Unknown
 };
 
@@ -42,12 +44,15 @@ FileFormat formatOf(const std::string& fileName)
     return FileFormat::Legacy;
   if (isGmshFileName(fileName))
     return FileFormat::Gmsh;
+  if (isTetGenFileName(fileName))
+    return FileFormat::TetGen;
   return FileFormat::Unknown;
 }
 
 Status unknownFormat(const std::string& fileName)
 {
-  return Status::failure("'" + fileName + "': unknown file type (use .vtu, .vtk, .msh or .mesh)");
+  return Status::failure(
+    "'" + fileName + "': unknown file type (use .vtu, .vtk, .msh, .mesh, or .ele or .node)");
 }
 
 constexpr std::pair<Compression, const char*> CompressionNames[] = { { Compression::None, "none" },
@@ -169,6 +174,8 @@ Status readUnstructuredGrid(
     return Status::failure("'" + fileName + "': no such file");
   if (format == FileFormat::Gmsh)
     return readGmshFile(fileName, grid, names);
+  if (format == FileFormat::TetGen)
+    return readTetGenFiles(fileName, grid);
 
   vtkNew<VTKMessageCollector> messages;
   vtkNew<vtkXMLUnstructuredGridReader> xmlReader;
@@ -271,6 +278,12 @@ Status writeUnstructuredGrid(
   const FileFormat format = formatOf(fileName);
   if (format == FileFormat::Unknown)
     return unknownFormat(fileName);
+  if (format == FileFormat::TetGen) // three files, each written under a temporary name
+  {
+    const Status status = writeTetGenFiles(grid, fileName, options);
+    return status.ok() ? status
+                       : Status::failure("cannot write '" + fileName + "': " + status.message());
+  }
   // The temporary keeps the extension: Gmsh chooses the format by it.
   const std::filesystem::path path(fileName);
   const std::string temporaryName = (path.parent_path() /

@@ -1,11 +1,15 @@
-"""Mixed tetrahedra and triangles through `cgmesh refine`, on a mesh Gmsh makes: two stacked boxes
+"""Mixed tetrahedra and triangles through `cgmesh refine`, and the Gmsh, Medit and TetGen file
+formats. First on a mesh Gmsh makes: two stacked boxes
 and a ball inside the lower one (three physical volumes), with physical surfaces on the bottom,
 the top, the box interface and the ball's curved surface, converted to .vtu by meshio as a Gmsh
 user would. Both methods, with and without a region array: the output, read back by meshio, must
 keep every tag; each tag's triangles must cover the same surface (area and vector area conserved,
 so the orientation is kept too) with more triangles than before; every triangle must be a boundary
 or material-interface face of the output tets; every physical volume keeps its volume; 1 and 2
-threads write the same bytes; and the input errors name the offending cells."""
+threads write the same bytes; and the input errors name the offending cells. The same mesh then
+goes .msh to .msh (4.1 and 2.2) and to Medit .mesh, and a TetGen mesh with region attributes and
+facet markers goes .ele to .ele, each output read back by meshio (or the test's TetGen reader) for
+the same checks and by Gmsh or TetGen themselves."""
 import argparse
 import os
 import re
@@ -158,6 +162,71 @@ def test_file_formats(cgmesh, gmsh, scratch, mesh):
           "--compression for a .msh output accepted: " + result.stderr)
 
 
+# A box split at z = 0.5 into two regions (attributes 1 and 2), facet markers 11 (bottom),
+# 12 (the splitting facet), 13 (top) and 14 (the sides).
+TETGEN_POLY = """12 3 0 0
+1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0
+5 0 0 0.5\n6 1 0 0.5\n7 1 1 0.5\n8 0 1 0.5
+9 0 0 1\n10 1 0 1\n11 1 1 1\n12 0 1 1
+11 1
+1 0 11\n4 1 2 3 4
+1 0 12\n4 5 6 7 8
+1 0 13\n4 9 10 11 12
+1 0 14\n4 1 2 6 5\n1 0 14\n4 2 3 7 6\n1 0 14\n4 3 4 8 7\n1 0 14\n4 4 1 5 8
+1 0 14\n4 5 6 10 9\n1 0 14\n4 6 7 11 10\n1 0 14\n4 7 8 12 11\n1 0 14\n4 8 5 9 12
+0
+2
+1 0.5 0.5 0.25 1 0
+2 0.5 0.5 0.75 2 0
+"""
+
+
+def read_tetgen(base):
+    """A meshio mesh with a Tag cell array from TetGen's .node, .ele and .face files (a test's own
+    reader: meshio reads no .face files)."""
+    def rows(extension):
+        with open(base + extension) as handle:
+            lines = [line.split("#")[0].split() for line in handle]
+        lines = [line for line in lines if line]
+        return lines[0], lines[1:]
+    header, nodes = rows(".node")
+    first = int(nodes[0][0])
+    points = numpy.array([[float(v) for v in row[1:4]] for row in nodes])
+    header, elements = rows(".ele")
+    tets = numpy.array([[int(v) - first for v in row[1:5]] for row in elements])
+    tet_tags = numpy.array([int(float(row[5])) if len(row) > 5 else 0 for row in elements])
+    header, faces = rows(".face")
+    triangles = numpy.array([[int(v) - first for v in row[1:4]] for row in faces])
+    triangle_tags = numpy.array([int(row[4]) if len(row) > 4 else 0 for row in faces])
+    return meshio.Mesh(points, [("tetra", tets), ("triangle", triangles)],
+                       cell_data={"Tag": [tet_tags, triangle_tags]})
+
+
+def test_tetgen_files(cgmesh, tetgen, scratch):
+    """A TetGen mesh with region attributes and facet markers, refined from .ele to .ele: each
+    marker's area and each region's volume conserved, and TetGen reads the output back."""
+    poly = os.path.join(scratch, "split-box.poly")
+    with open(poly, "w") as handle:
+        handle.write(TETGEN_POLY)
+    result = subprocess.run([tetgen, "-pqAa0.002", poly], capture_output=True, text=True)
+    check(result.returncode == 0, "tetgen: " + result.stdout[-1500:])
+    if result.returncode != 0:
+        return
+    source = os.path.join(scratch, "split-box.1.ele")
+    output = os.path.join(scratch, "split-box-refined.ele")
+    result = run(cgmesh, "refine", source, output, "--partitions", "8")
+    check(result.returncode == 0, "refine .ele: " + result.stderr)
+    if result.returncode != 0:
+        return
+    before = read_tetgen(source[:-4])
+    compare(before, read_tetgen(output[:-4]), "tetgen files")
+    check(sorted(volume_figures(before, "Tag")) == [1, 2],
+          "tetgen files: regions %s" % sorted(volume_figures(before, "Tag")))
+    result = subprocess.run([tetgen, "-rNEF", output[:-4]], capture_output=True, text=True)
+    check(result.returncode == 0 and "Error" not in result.stdout,
+          "TetGen does not read the output: " + result.stdout[-1500:])
+
+
 def make_input(gmsh, scratch):
     """The Gmsh mesh as a Gmsh user converts it: tets and triangles with their physical tags."""
     geometry = os.path.join(scratch, "two-volumes.geo")
@@ -255,6 +324,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--cgmesh", required=True)
     parser.add_argument("--gmsh", default="gmsh")
+    parser.add_argument("--tetgen", default="tetgen")
     parser.add_argument("--scratch", required=True)
     options = parser.parse_args()
     shutil.rmtree(options.scratch, ignore_errors=True)
@@ -264,6 +334,7 @@ def main():
         test_refinement(options.cgmesh, options.scratch, path, mesh)
         test_errors(options.cgmesh, options.scratch, mesh)
         test_file_formats(options.cgmesh, options.gmsh, options.scratch, mesh)
+        test_tetgen_files(options.cgmesh, options.tetgen, options.scratch)
     if FAILURES:
         print("%d checks failed" % len(FAILURES), file=sys.stderr)
         return 1

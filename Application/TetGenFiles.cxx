@@ -1,0 +1,253 @@
+#include "TetGenFiles.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <tetgen.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fcntl.h>
+#include <filesystem>
+#include <unistd.h>
+#include <vector>
+
+namespace cgmesh
+{
+
+namespace
+{
+
+std::string baseNameOf(const std::string& fileName)
+{
+  const std::filesystem::path path(fileName);
+  return (path.parent_path() / path.stem()).string();
+}
+
+// tetgenio's load and save functions announce every file on stdout; the command's own output
+// stays clean while they run.
+class QuietStdout
+{
+public:
+  QuietStdout()
+  {
+    std::fflush(stdout);
+    this->Saved = ::dup(STDOUT_FILENO);
+    const int devNull = ::open("/dev/null", O_WRONLY);
+    if (devNull >= 0)
+    {
+      ::dup2(devNull, STDOUT_FILENO);
+      ::close(devNull);
+    }
+  }
+  ~QuietStdout()
+  {
+    std::fflush(stdout);
+    if (this->Saved >= 0)
+    {
+      ::dup2(this->Saved, STDOUT_FILENO);
+      ::close(this->Saved);
+    }
+  }
+  QuietStdout(const QuietStdout&) = delete;
+  QuietStdout& operator=(const QuietStdout&) = delete;
+
+private:
+  int Saved = -1;
+};
+
+// tetgenio takes mutable C strings.
+std::vector<char> cString(const std::string& text)
+{
+  return std::vector<char>(text.c_str(), text.c_str() + text.size() + 1);
+}
+
+int integerValue(vtkDataArray* array, vtkIdType id)
+{
+  return array ? static_cast<int>(std::lround(array->GetComponent(id, 0))) : 0;
+}
+
+} // namespace
+
+bool isTetGenFileName(const std::string& fileName)
+{
+  const std::string extension = std::filesystem::path(fileName).extension().string();
+  return extension == ".ele" || extension == ".node";
+}
+
+Status readTetGenFiles(const std::string& fileName, vtkUnstructuredGrid* grid)
+{
+  const std::string base = baseNameOf(fileName);
+  for (const char* extension : { ".node", ".ele" })
+  {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(base + extension, error))
+      return Status::failure("'" + base + extension +
+        "': no such file (TetGen meshes are read "
+        "from the .node and .ele files together)");
+  }
+  tetgenio io;
+  std::vector<char> name = cString(base);
+  bool loaded = false;
+  {
+    const QuietStdout quiet;
+    loaded = io.load_node(name.data()) && io.load_tet(name.data());
+    std::error_code error;
+    if (loaded && std::filesystem::is_regular_file(base + ".face", error))
+      loaded = io.load_face(name.data());
+  }
+  if (!loaded)
+    return Status::failure("'" + fileName + "': TetGen cannot read the .node, .ele or .face file");
+  if (io.numberofcorners != 4)
+    return Status::failure("'" + fileName + "' holds tetrahedra with " +
+      std::to_string(io.numberofcorners) + " nodes; cgmesh refines linear tetrahedra");
+
+  const vtkIdType points = io.numberofpoints;
+  const auto pointOf = [&](int index, vtkIdType& point)
+  {
+    point = static_cast<vtkIdType>(index) - io.firstnumber;
+    return point >= 0 && point < points;
+  };
+  vtkNew<vtkPoints> coordinates;
+  coordinates->SetDataTypeToDouble();
+  coordinates->SetNumberOfPoints(points);
+  for (vtkIdType p = 0; p < points; ++p)
+    coordinates->SetPoint(p, io.pointlist + 3 * p);
+  grid->Initialize();
+  grid->SetPoints(coordinates);
+  if (io.pointmarkerlist)
+  {
+    vtkNew<vtkIntArray> markers;
+    markers->SetName("Marker");
+    markers->SetNumberOfValues(points);
+    for (vtkIdType p = 0; p < points; ++p)
+      markers->SetValue(p, io.pointmarkerlist[p]);
+    grid->GetPointData()->AddArray(markers);
+  }
+
+  vtkNew<vtkIntArray> tags;
+  tags->SetName("Tag");
+  grid->Allocate(io.numberoftetrahedra + io.numberoftrifaces);
+  for (int t = 0; t < io.numberoftetrahedra; ++t)
+  {
+    vtkIdType corners[4];
+    for (int k = 0; k < 4; ++k)
+      if (!pointOf(io.tetrahedronlist[4 * t + k], corners[k]))
+        return Status::failure("'" + base + ".ele': tetrahedron " + std::to_string(t + 1) +
+          " names a node that does not exist");
+    grid->InsertNextCell(VTK_TETRA, 4, corners);
+    tags->InsertNextValue(io.numberoftetrahedronattributes > 0
+        ? static_cast<int>(
+            std::lround(io.tetrahedronattributelist[io.numberoftetrahedronattributes * t]))
+        : 0);
+  }
+  for (int f = 0; f < io.numberoftrifaces; ++f)
+  {
+    vtkIdType corners[3];
+    for (int k = 0; k < 3; ++k)
+      if (!pointOf(io.trifacelist[3 * f + k], corners[k]))
+        return Status::failure("'" + base + ".face': face " + std::to_string(f + 1) +
+          " names a node that does not exist");
+    grid->InsertNextCell(VTK_TRIANGLE, 3, corners);
+    tags->InsertNextValue(io.trifacemarkerlist ? io.trifacemarkerlist[f] : 0);
+  }
+  grid->GetCellData()->AddArray(tags);
+  return Status::success();
+}
+
+Status writeTetGenFiles(
+  vtkUnstructuredGrid* grid, const std::string& fileName, const WriteOptions& options)
+{
+  vtkDataArray* tags =
+    options.tagArray.empty() ? nullptr : grid->GetCellData()->GetArray(options.tagArray.c_str());
+  std::vector<vtkIdType> tets, triangles;
+  for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
+  {
+    const int type = grid->GetCellType(cellId);
+    if (type != VTK_TETRA && type != VTK_TRIANGLE)
+      return Status::failure("cell " + std::to_string(cellId) +
+        " is neither a tetrahedron nor a triangle, which is all TetGen files hold");
+    (type == VTK_TETRA ? tets : triangles).push_back(cellId);
+  }
+
+  // tetgenio owns its arrays and frees them with delete[].
+  tetgenio io;
+  io.firstnumber = 1;
+  io.numberofpoints = static_cast<int>(grid->GetNumberOfPoints());
+  io.pointlist = new REAL[3 * static_cast<std::size_t>(io.numberofpoints)];
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
+    grid->GetPoint(p, io.pointlist + 3 * p);
+  vtkDataArray* markers = grid->GetPointData()->GetArray("Marker");
+  if (markers)
+  {
+    io.pointmarkerlist = new int[io.numberofpoints];
+    for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
+      io.pointmarkerlist[p] = integerValue(markers, p);
+  }
+  const auto copyCorners = [&](vtkIdType cellId, int* destination)
+  {
+    const vtkIdType* corners;
+    vtkIdType count;
+    grid->GetCellPoints(cellId, count, corners);
+    for (vtkIdType k = 0; k < count; ++k)
+      destination[k] = static_cast<int>(corners[k]) + 1;
+  };
+  io.numberoftetrahedra = static_cast<int>(tets.size());
+  io.tetrahedronlist = new int[4 * tets.size()];
+  if (tags)
+  {
+    io.numberoftetrahedronattributes = 1;
+    io.tetrahedronattributelist = new REAL[tets.size()];
+  }
+  for (std::size_t t = 0; t < tets.size(); ++t)
+  {
+    copyCorners(tets[t], io.tetrahedronlist + 4 * t);
+    if (tags)
+      io.tetrahedronattributelist[t] = integerValue(tags, tets[t]);
+  }
+  io.numberoftrifaces = static_cast<int>(triangles.size());
+  io.trifacelist = new int[3 * triangles.size()];
+  io.trifacemarkerlist = new int[triangles.size()];
+  for (std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    copyCorners(triangles[f], io.trifacelist + 3 * f);
+    io.trifacemarkerlist[f] = integerValue(tags, triangles[f]);
+  }
+
+  // Written under a temporary base name, then renamed file by file.
+  const std::string base = baseNameOf(fileName);
+  const std::string temporary = base + ".partial-" + std::to_string(::getpid());
+  std::vector<char> name = cString(temporary);
+  {
+    const QuietStdout quiet;
+    io.save_nodes(name.data());
+    io.save_elements(name.data());
+    io.save_faces(name.data());
+  }
+  for (const char* extension : { ".node", ".ele", ".face" })
+  {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(temporary + extension, error))
+    {
+      for (const char* written : { ".node", ".ele", ".face" })
+        std::filesystem::remove(temporary + written, error);
+      return Status::failure("TetGen could not write '" + base + extension + "'");
+    }
+  }
+  for (const char* extension : { ".node", ".ele", ".face" })
+  {
+    std::error_code error;
+    std::filesystem::rename(temporary + extension, base + extension, error);
+    if (error)
+      return Status::failure("cannot write '" + base + extension + "': " + error.message());
+  }
+  return Status::success();
+}
+
+} // namespace cgmesh
