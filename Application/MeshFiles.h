@@ -25,7 +25,7 @@ enum class Compression
   ZLib
 };
 // None: the fastest to write (see compressionHelp()); LZ4 and zlib trade writing speed for size.
-// meshio reads only zlib among them: it knows no LZ4 and base64-decodes raw uncompressed data.
+// meshio 7 reads None and ZLib; it knows no LZ4.
 constexpr Compression DefaultCompression = Compression::None;
 
 // "none", "lz4" or "zlib": the names of --compression.

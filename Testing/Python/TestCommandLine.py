@@ -859,10 +859,9 @@ def test_compression(cgmesh, scratch):
 
 
 def test_meshio_reads_outputs(cgmesh, scratch):
-    """meshio (Debian's python3-meshio) reads the CLI's zlib .vtu and legacy .vtk files with every
-    array. (It base64-decodes raw appended data that is not compressed, so the default .vtu, which
-    ParaView reads, is not for meshio.) Text diagnostics and material names are written only when
-    asked for."""
+    """meshio (Debian's python3-meshio) reads the CLI's default (uncompressed) and zlib .vtu files
+    and legacy .vtk files with every array, and the three give the same points and values (only
+    LZ4 is beyond it). Text diagnostics and material names are written only when asked for."""
     import meshio
     finfet = os.path.join(scratch, "meshio-finfet.vtu")
     check(run(cgmesh, "generate", "finfet-grid", finfet, "--cells", "3000").returncode == 0,
@@ -870,8 +869,10 @@ def test_meshio_reads_outputs(cgmesh, scratch):
     plain = os.path.join(scratch, "meshio-refined.vtu")
     check(run(cgmesh, "refine", finfet, plain, "--partitions", "16").returncode == 0,
           "refine with the default compression")
-    outputs = {"vtu zlib": os.path.join(scratch, "meshio-refined-zlib.vtu"),
+    outputs = {"vtu none": os.path.join(scratch, "meshio-refined-none.vtu"),
+               "vtu zlib": os.path.join(scratch, "meshio-refined-zlib.vtu"),
                "vtk": os.path.join(scratch, "meshio-refined.vtk")}
+    read = {}
     cell_arrays = {"Material", "PartitionId", "ColorId", "NearFormerInterface", "EdgeRatio",
                    "MinDihedralAngle"}
     for kind, path in outputs.items():
@@ -891,12 +892,21 @@ def test_meshio_reads_outputs(cgmesh, scratch):
             continue
         check(sum(len(block.data) for block in mesh.cells if block.type == "tetra") == cells,
               "meshio (%s): wrong tet count" % kind)
+        read[kind] = mesh
         check(cell_arrays <= set(mesh.cell_data),
               "meshio (%s): cell arrays %s" % (kind, sorted(mesh.cell_data)))
         if kind == "vtk":
             continue  # meshio's legacy reader drops a dataset's FIELD block
         for name in ("MethodIndex", "ColoringAlgorithmIndex", "NumberOfColors", "IterationsRun"):
             check(name in mesh.field_data, "meshio (%s): field data %s missing" % (kind, name))
+    if len(read) == len(outputs):
+        import numpy
+        reference = read["vtu zlib"]
+        for kind, mesh in read.items():
+            check(numpy.array_equal(mesh.points, reference.points) and
+                  all(numpy.array_equal(mesh.cell_data[name][0], reference.cell_data[name][0])
+                      for name in ("Material", "PartitionId", "MinDihedralAngle")),
+                  "meshio reads other values from the %s output than from the zlib one" % kind)
     named = os.path.join(scratch, "meshio-named.vtu")
     diagnosed = os.path.join(scratch, "meshio-diagnostics.vtu")
     run(cgmesh, "generate", "finfet-grid", named, "--cells", "3000", "--material-names")
