@@ -79,7 +79,7 @@ int runCheckCommand(const std::vector<std::string>& commandArguments)
     status = checkRegionArray(grid, arguments.regionArrayName, arguments.inputFile);
   if (!status.ok())
     return reportError(status.message());
-  const vtkIdType unsupported = countUnsupportedCells(grid);
+  const vtkIdType unsupported = countNonTetrahedra(grid, /*trianglesAccepted=*/true);
   if (unsupported > 0)
     return reportError(std::to_string(unsupported) +
       " cells are neither linear tetrahedra nor triangles: " +

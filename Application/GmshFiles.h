@@ -22,8 +22,7 @@ class vtkUnstructuredGrid;
 namespace cgmesh
 {
 
-// The cell arrays of the in-memory form.
-constexpr const char* TagArrayName = "Tag";
+// The elementary entity of each cell (the physical group is in TagArrayName, MeshFiles.h).
 constexpr const char* EntityArrayName = "Entity";
 
 // True for the extensions handled here (.msh, .mesh).

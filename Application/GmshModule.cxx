@@ -87,9 +87,10 @@ std::string lastGmshError(const std::string& fallback)
   return error.empty() ? fallback : error;
 }
 
-// Runs `body` in a Gmsh session; whatever Gmsh throws becomes a failure naming the file.
+// Runs `body` in a Gmsh session; whatever Gmsh throws becomes a failure. The messages do not
+// name the file: the caller does (a written file has a temporary name here).
 template <typename Body>
-Status withGmsh(const std::string& fileName, const char* action, Body&& body)
+Status withGmsh(const char* action, Body&& body)
 {
   try
   {
@@ -101,17 +102,17 @@ Status withGmsh(const std::string& fileName, const char* action, Body&& body)
     catch (const std::exception& error)
     {
       return Status::failure(
-        "'" + fileName + "': Gmsh cannot " + action + " it: " + lastGmshError(error.what()));
+        std::string("Gmsh cannot ") + action + " it: " + lastGmshError(error.what()));
     }
     catch (...)
     {
       return Status::failure(
-        "'" + fileName + "': Gmsh cannot " + action + " it: " + lastGmshError("unknown error"));
+        std::string("Gmsh cannot ") + action + " it: " + lastGmshError("unknown error"));
     }
   }
   catch (...)
   {
-    return Status::failure("'" + fileName + "': the Gmsh library could not be started");
+    return Status::failure("the Gmsh library could not be started");
   }
 }
 
@@ -123,7 +124,7 @@ vtkSmartPointer<vtkIntArray> newIntArray(const char* name, vtkIdType size)
   return array;
 }
 
-Status readOpenModel(const std::string& fileName, vtkUnstructuredGrid* grid, MeshFileNames* names)
+Status readOpenModel(vtkUnstructuredGrid* grid, MeshFileNames* names)
 {
   std::vector<std::size_t> nodeTags;
   std::vector<double> coordinates, parametric;
@@ -167,8 +168,8 @@ Status readOpenModel(const std::string& fileName, vtkUnstructuredGrid* grid, Mes
           std::vector<double> local;
           gmsh::model::mesh::getElementProperties(
             types[t], name, elementDimension, order, nodes, local, primary);
-          return Status::failure("'" + fileName + "' holds " +
-            std::to_string(elementTags[t].size()) + " elements of type " + name +
+          return Status::failure("the file holds " + std::to_string(elementTags[t].size()) +
+            " elements of type " + name +
             ", which cgmesh does not refine: it takes linear tetrahedra, with triangles tagging "
             "their faces");
         }
@@ -179,8 +180,8 @@ Status readOpenModel(const std::string& fileName, vtkUnstructuredGrid* grid, Mes
           {
             const auto found = pointOfTag.find(elementNodes[t][kind->nodes * e + c]);
             if (found == pointOfTag.end())
-              return Status::failure("'" + fileName + "': element " +
-                std::to_string(elementTags[t][e]) + " names a node that does not exist");
+              return Status::failure("element " + std::to_string(elementTags[t][e]) +
+                " names a node that does not exist");
             corners[c] = found->second;
           }
           grid->InsertNextCell(kind->vtkType, kind->nodes, corners);
@@ -193,12 +194,13 @@ Status readOpenModel(const std::string& fileName, vtkUnstructuredGrid* grid, Mes
   grid->GetCellData()->AddArray(tags);
   grid->GetCellData()->AddArray(entities);
   gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups);
+  if (names)
+    gmsh::model::getPhysicalGroups(groups);
   for (const auto& [dim, tag] : groups)
   {
     std::string name;
     gmsh::model::getPhysicalName(dim, tag, name);
-    if (names && !name.empty())
+    if (!name.empty())
       names->physicalNames[{ dim, tag }] = name;
   }
   return Status::success();
@@ -237,7 +239,7 @@ Status writeModel(
   {
     const ElementKind* kind = kindOfVTKType(grid->GetCellType(cellId));
     if (!kind)
-      return Status::failure("cannot write '" + fileName + "': cell " + std::to_string(cellId) +
+      return Status::failure("cell " + std::to_string(cellId) +
         " is neither a tetrahedron, a triangle, a line nor a vertex");
     const int tag = integerValue(tags, cellId, 1) + shift;
     const int entity = entities && shift == 0 ? integerValue(entities, cellId, tag) : tag;
@@ -274,7 +276,7 @@ Status writeModel(
     }
   }
   if (nodeEntityDimension < 0)
-    return Status::failure("cannot write '" + fileName + "': the mesh has no cells");
+    return Status::failure("the mesh has no cells");
 
   std::vector<std::size_t> nodeTags(static_cast<std::size_t>(grid->GetNumberOfPoints()));
   std::vector<double> coordinates(3 * nodeTags.size());
@@ -322,18 +324,19 @@ Status writeModel(
 
 Status readFile(const std::string& fileName, vtkUnstructuredGrid* grid, MeshFileNames* names)
 {
-  return withGmsh(fileName, "read",
+  const Status status = withGmsh("read",
     [&]()
     {
       gmsh::open(fileName);
-      return readOpenModel(fileName, grid, names);
+      return readOpenModel(grid, names);
     });
+  return status.ok() ? status : Status::failure("'" + fileName + "': " + status.message());
 }
 
 Status writeFile(
   vtkUnstructuredGrid* grid, const std::string& fileName, const WriteOptions& options)
 {
-  return withGmsh(fileName, "write", [&]() { return writeModel(grid, fileName, options); });
+  return withGmsh("write", [&]() { return writeModel(grid, fileName, options); });
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 // Reading and writing unstructured grids, the format chosen by extension: VTK XML (.vtu) and legacy
 // (.vtk) files through VTK, Gmsh (.msh) and Medit (.mesh) files through Gmsh's library (see
-// GmshFiles.h); and the checks on file names and arrays that the commands make before any long
-// work.
+// GmshFiles.h), TetGen .node/.ele/.face files through tetgenio (see TetGenFiles.h); and the checks
+// on file names and arrays that the commands make before any long work.
 #ifndef cgmesh_MeshFiles_h
 #define cgmesh_MeshFiles_h
 
@@ -38,6 +38,10 @@ bool isLegacyFileName(const std::string& fileName);
 // True for a .vtu (XML) file name: the only format with compression settings.
 bool isXMLFileName(const std::string& fileName);
 
+// The integer cell array that holds what Gmsh, Medit and TetGen files tag cells with (physical
+// group, reference, region attribute or face marker).
+constexpr const char* TagArrayName = "Tag";
+
 // What a file says about its tags beyond the grid's cell arrays: the names of Gmsh's physical
 // groups, by (dimension, tag), so that a refined mesh is written back with them.
 struct MeshFileNames
@@ -49,8 +53,8 @@ struct MeshFileNames
 struct WriteOptions
 {
   Compression compression = DefaultCompression; // .vtu only
-  // Gmsh and Medit: the integer cell array whose values become the physical groups (see
-  // GmshFiles.h); empty: all cells in group 1.
+  // Gmsh, Medit and TetGen: the integer cell array whose values become the tags (see GmshFiles.h
+  // and TetGenFiles.h).
   std::string tagArray;
   double mshVersion = 4.1;              // Gmsh: 4.1 or 2.2
   const MeshFileNames* names = nullptr; // Gmsh: physical group names to write

@@ -62,6 +62,9 @@ private:
   int Saved = -1;
 };
 
+// The files a TetGen mesh is written to, under one base name.
+constexpr const char* WrittenExtensions[] = { ".node", ".ele", ".face" };
+
 // tetgenio takes mutable C strings.
 std::vector<char> cString(const std::string& text)
 {
@@ -132,7 +135,7 @@ Status readTetGenFiles(const std::string& fileName, vtkUnstructuredGrid* grid)
   }
 
   vtkNew<vtkIntArray> tags;
-  tags->SetName("Tag");
+  tags->SetName(TagArrayName);
   grid->Allocate(io.numberoftetrahedra + io.numberoftrifaces);
   for (int t = 0; t < io.numberoftetrahedra; ++t)
   {
@@ -230,22 +233,22 @@ Status writeTetGenFiles(
     io.save_elements(name.data());
     io.save_faces(name.data());
   }
-  for (const char* extension : { ".node", ".ele", ".face" })
+  for (const char* extension : WrittenExtensions)
   {
     std::error_code error;
     if (!std::filesystem::is_regular_file(temporary + extension, error))
     {
-      for (const char* written : { ".node", ".ele", ".face" })
+      for (const char* written : WrittenExtensions)
         std::filesystem::remove(temporary + written, error);
-      return Status::failure("TetGen could not write '" + base + extension + "'");
+      return Status::failure(std::string("TetGen did not write the ") + extension + " file");
     }
   }
-  for (const char* extension : { ".node", ".ele", ".face" })
+  for (const char* extension : WrittenExtensions)
   {
     std::error_code error;
     std::filesystem::rename(temporary + extension, base + extension, error);
     if (error)
-      return Status::failure("cannot write '" + base + extension + "': " + error.message());
+      return Status::failure("'" + base + extension + "': " + error.message());
   }
   return Status::success();
 }

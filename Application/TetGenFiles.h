@@ -4,8 +4,9 @@
 //
 // In memory: the .node points (their boundary markers, when present, as the integer point array
 // Marker), the .ele tetrahedra with their first attribute (TetGen's region attribute) as the cell
-// array Tag, and the .face triangles, when the file exists, with their markers as Tag. Writing is
-// the reverse: tetrahedra and triangles are numbered from 1, as TetGen numbers its own output.
+// array Tag (TagArrayName), and the .face triangles, when the file exists, with their markers as
+// Tag. Writing is the reverse: tetrahedra and triangles are numbered from 1, as TetGen numbers its
+// own output.
 #ifndef cgmesh_TetGenFiles_h
 #define cgmesh_TetGenFiles_h
 

@@ -5,7 +5,6 @@
 
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
-#include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -37,24 +36,6 @@ void addCellArray(vtkCellData* cellData, const char* name, const Values& perTet,
       cellId, cellId < tets ? static_cast<typename Array::ValueType>(perTet[cellId]) : fill);
   }
   cellData->AddArray(array);
-}
-
-// Every output cell receives all cell data of the input cell it came from.
-void copyCellDataFromParents(
-  vtkCellData* inputCellData, const std::vector<vtkIdType>& parentOf, vtkCellData* outputCellData)
-{
-  const vtkIdType numberOfCells = static_cast<vtkIdType>(parentOf.size());
-  outputCellData->CopyAllocate(inputCellData, numberOfCells);
-  vtkNew<vtkIdList> parentIds;
-  vtkNew<vtkIdList> childIds;
-  parentIds->SetNumberOfIds(numberOfCells);
-  childIds->SetNumberOfIds(numberOfCells);
-  for (vtkIdType childId = 0; childId < numberOfCells; ++childId)
-  {
-    parentIds->SetId(childId, parentOf[childId]);
-    childIds->SetId(childId, childId);
-  }
-  outputCellData->CopyData(inputCellData, parentIds, childIds);
 }
 
 // Comma-separated names, trimmed; empty entries dropped.
@@ -100,7 +81,8 @@ void fillAdaptedGrid(
       parentOf.push_back(input.triangles->triangleCellIds[child.parent]);
     }
   }
-  copyCellDataFromParents(input.grid->GetCellData(), parentOf, output->GetCellData());
+  // Every output cell receives all cell data of the input cell it came from.
+  copyCellData(input.grid->GetCellData(), parentOf, output->GetCellData());
   if (!result.provenance.offsets.empty() && input.grid->GetPointData()->GetNumberOfArrays() > 0)
   {
     transferPointData(input.grid->GetPointData(), result.provenance,

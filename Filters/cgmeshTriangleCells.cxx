@@ -1,14 +1,14 @@
 #include "cgmeshTriangleCells.h"
 
+#include "cgmeshVTKConversion.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
-#include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <string>
@@ -30,17 +30,6 @@ std::string describeTriangle(const TriangleCells& cells, std::size_t index)
 
 } // namespace
 
-vtkIdType countUnsupportedCells(vtkUnstructuredGrid* grid)
-{
-  vtkIdType count = 0;
-  for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
-  {
-    const int type = grid->GetCellType(cellId);
-    count += type != VTK_TETRA && type != VTK_TRIANGLE;
-  }
-  return count;
-}
-
 bool hasTriangles(vtkUnstructuredGrid* grid)
 {
   for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
@@ -57,7 +46,6 @@ void separateTriangles(vtkUnstructuredGrid* grid, vtkUnstructuredGrid* tets, Tri
 {
   cells = TriangleCells();
   vtkNew<vtkCellArray> tetCells;
-  vtkNew<vtkIdList> tetIds;
   auto iterator = vtk::TakeSmartPointer(grid->GetCells()->NewIterator());
   for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
   {
@@ -72,21 +60,13 @@ void separateTriangles(vtkUnstructuredGrid* grid, vtkUnstructuredGrid* tets, Tri
       continue;
     }
     cells.tetCellIds.push_back(cellId);
-    tetIds->InsertNextId(cellId);
     tetCells->InsertNextCell(count, points);
   }
   tets->Initialize();
   tets->SetPoints(grid->GetPoints());
   tets->GetPointData()->ShallowCopy(grid->GetPointData());
   tets->SetCells(VTK_TETRA, tetCells);
-  vtkNew<vtkIdList> newIds;
-  newIds->SetNumberOfIds(tetIds->GetNumberOfIds());
-  for (vtkIdType k = 0; k < newIds->GetNumberOfIds(); ++k)
-  {
-    newIds->SetId(k, k);
-  }
-  tets->GetCellData()->CopyAllocate(grid->GetCellData(), tetIds->GetNumberOfIds());
-  tets->GetCellData()->CopyData(grid->GetCellData(), tetIds, newIds);
+  copyCellData(grid->GetCellData(), cells.tetCellIds, tets->GetCellData());
   tets->GetFieldData()->ShallowCopy(grid->GetFieldData());
 }
 

@@ -24,9 +24,6 @@ struct TriangleCells
   std::vector<Triangle> triangles;        // the triangles' point ids
 };
 
-// Number of cells of `grid` that are neither linear tetrahedra nor triangles.
-CGMESHFILTERS_EXPORT vtkIdType countUnsupportedCells(vtkUnstructuredGrid* grid);
-
 // Whether `grid` holds at least one triangle.
 CGMESHFILTERS_EXPORT bool hasTriangles(vtkUnstructuredGrid* grid);
 

@@ -6,6 +6,7 @@
 #include "vtkCellType.h"
 #include "vtkCellTypes.h"
 #include "vtkDataArray.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -25,18 +26,31 @@
 namespace cgmesh
 {
 
-vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid)
+vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid, bool trianglesAccepted)
 {
   vtkIdType count = 0;
-  const vtkIdType numberOfCells = grid->GetNumberOfCells();
-  for (vtkIdType cellId = 0; cellId < numberOfCells; ++cellId)
+  for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
   {
-    if (grid->GetCellType(cellId) != VTK_TETRA)
-    {
-      ++count;
-    }
+    const int type = grid->GetCellType(cellId);
+    count += type != VTK_TETRA && !(trianglesAccepted && type == VTK_TRIANGLE);
   }
   return count;
+}
+
+void copyCellData(vtkCellData* input, const std::vector<vtkIdType>& sourceOf, vtkCellData* output)
+{
+  const vtkIdType numberOfCells = static_cast<vtkIdType>(sourceOf.size());
+  output->CopyAllocate(input, numberOfCells);
+  vtkNew<vtkIdList> sourceIds;
+  vtkNew<vtkIdList> targetIds;
+  sourceIds->SetNumberOfIds(numberOfCells);
+  targetIds->SetNumberOfIds(numberOfCells);
+  for (vtkIdType cellId = 0; cellId < numberOfCells; ++cellId)
+  {
+    sourceIds->SetId(cellId, sourceOf[cellId]);
+    targetIds->SetId(cellId, cellId);
+  }
+  output->CopyData(input, sourceIds, targetIds);
 }
 
 std::string describeNonTetrahedra(vtkUnstructuredGrid* grid, bool trianglesAccepted)

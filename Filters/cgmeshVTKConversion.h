@@ -10,7 +10,9 @@
 #include "Core/TetMesh.h"
 
 #include <string>
+#include <vector>
 
+class vtkCellData;
 class vtkUnstructuredGrid;
 
 namespace cgmesh
@@ -19,8 +21,10 @@ namespace cgmesh
 // Whether a VTK data type (VTK_INT, VTK_DOUBLE, ...) is an integer type, vtkIdType included.
 CGMESHFILTERS_EXPORT bool isIntegerDataType(int vtkType);
 
-// Number of cells of `grid` that are not linear tetrahedra (VTK_TETRA).
-CGMESHFILTERS_EXPORT vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid);
+// Number of cells of `grid` that are not linear tetrahedra (VTK_TETRA), nor triangles when
+// `trianglesAccepted`.
+CGMESHFILTERS_EXPORT vtkIdType countNonTetrahedra(
+  vtkUnstructuredGrid* grid, bool trianglesAccepted = false);
 
 // The cells of `grid` that are not linear tetrahedra (nor triangles, when `trianglesAccepted`), by
 // type ("3 Line, 2 Hexahedron"), and what to do about them: lower-dimensional cells are dropped
@@ -28,6 +32,11 @@ CGMESHFILTERS_EXPORT vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid);
 // are none.
 CGMESHFILTERS_EXPORT std::string describeNonTetrahedra(
   vtkUnstructuredGrid* grid, bool trianglesAccepted = false);
+
+// Output cell i receives every array's tuple of input cell sourceOf[i] (`output` is allocated
+// for sourceOf.size() cells).
+CGMESHFILTERS_EXPORT void copyCellData(
+  vtkCellData* input, const std::vector<vtkIdType>& sourceOf, vtkCellData* output);
 
 // Copies points and tetrahedra of `grid` into `mesh`. When `regionArrayName` is not empty the named
 // cell array (any numeric type, first component, converted to int) becomes mesh.regions; a missing

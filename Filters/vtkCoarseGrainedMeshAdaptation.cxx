@@ -179,12 +179,13 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "TotalSeconds", totalSeconds);
 }
 
-// The filter's parameters, with the progress and abort hooks of this run.
+// The filter's parameters, with the progress and abort hooks of this run. Provenance is needed to
+// interpolate point data and to find the children of triangles.
 cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter,
-  const cgmesh::AdaptationOptions& parameters, vtkUnstructuredGrid* input)
+  const cgmesh::AdaptationOptions& parameters, vtkUnstructuredGrid* input, bool withTriangles)
 {
   cgmesh::AdaptationOptions options = parameters;
-  options.pointProvenance = input->GetPointData()->GetNumberOfArrays() > 0;
+  options.pointProvenance = input->GetPointData()->GetNumberOfArrays() > 0 || withTriangles;
   // The driver calls both hooks on the calling thread only.
   options.progress = [filter](double fraction, const char*)
   {
@@ -390,7 +391,7 @@ std::string vtkCoarseGrainedMeshAdaptation::ResolveSizeArrayName(vtkUnstructured
 //------------------------------------------------------------------------------
 bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
 {
-  const vtkIdType unsupported = cgmesh::countUnsupportedCells(input);
+  const vtkIdType unsupported = cgmesh::countNonTetrahedra(input, /*trianglesAccepted=*/true);
   if (unsupported > 0)
   {
     vtkErrorMacro(<< "The input must hold only linear tetrahedra and triangles, but " << unsupported
@@ -480,9 +481,8 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   }
 
   cgmesh::AdaptationResult result;
-  cgmesh::AdaptationOptions options = makeOptions(this, this->Internals->Parameters, input);
-  options.pointProvenance = options.pointProvenance || withTriangles; // triangles follow it
-  status = cgmesh::adaptMesh(inputMesh, options, result);
+  status = cgmesh::adaptMesh(
+    inputMesh, makeOptions(this, this->Internals->Parameters, input, withTriangles), result);
   this->Internals->LastSummary = result.summary;
   this->Internals->LastQualitySeconds = 0;
   this->Internals->HasRun = true;

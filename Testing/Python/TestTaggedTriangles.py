@@ -20,7 +20,7 @@ import sys
 import meshio
 import numpy
 
-from TestCommandLine import digest, region_volumes
+from TestCommandLine import digest, region_volumes, run
 
 FAILURES = []
 
@@ -48,10 +48,6 @@ def check(condition, message):
     if not condition:
         FAILURES.append(message)
         print("check failed: " + message, file=sys.stderr)
-
-
-def run(cgmesh, *arguments):
-    return subprocess.run([cgmesh, *arguments], capture_output=True, text=True)
 
 
 def cells_of(mesh, cell_type, array="Tag"):
@@ -83,18 +79,24 @@ def volume_figures(mesh, array):
     return {int(tag): float(volumes[tags == tag].sum()) for tag in numpy.unique(tags)}
 
 
+def tets_of_faces(tets):
+    """{sorted face corners: indices of the tets holding the face}."""
+    holders = {}
+    for index, tet in enumerate(tets):
+        for skip in range(4):
+            face = tuple(sorted(int(tet[k]) for k in range(4) if k != skip))
+            holders.setdefault(face, []).append(index)
+    return holders
+
+
 def triangles_are_kept_faces(mesh, array):
     """How many triangles are no face of a tet, or lie between two tets of one tag."""
     tets, tet_tags = cells_of(mesh, "tetra", array)
-    holders = {}
-    for tet, tag in zip(tets, tet_tags):
-        for skip in range(4):
-            face = tuple(sorted(int(tet[k]) for k in range(4) if k != skip))
-            holders.setdefault(face, []).append(int(tag))
+    holders = tets_of_faces(tets)
     triangles, _ = cells_of(mesh, "triangle", array)
     bad = 0
     for triangle in triangles:
-        tags = holders.get(tuple(sorted(int(v) for v in triangle)), [])
+        tags = [tet_tags[t] for t in holders.get(tuple(sorted(int(v) for v in triangle)), [])]
         bad += not (len(tags) == 1 or (len(tags) == 2 and tags[0] != tags[1]))
     return bad
 
@@ -305,12 +307,7 @@ def test_errors(cgmesh, scratch, mesh):
                  ["1 of the input's %d triangles are not faces" % (len(triangles) + 1),
                   "cell %d" % stray_cell])
     # An interior face of the upper box: between two tets of one material.
-    holders = {}
-    for index, tet in enumerate(tets):
-        for skip in range(4):
-            face = tuple(sorted(int(tet[k]) for k in range(4) if k != skip))
-            holders.setdefault(face, []).append(index)
-    inner = next(face for face, held in holders.items()
+    inner = next(face for face, held in tets_of_faces(tets).items()
                  if len(held) == 2 and tet_tags[held[0]] == tet_tags[held[1]] == 2)
     inside = meshio.Mesh(mesh.points, [("tetra", tets), ("triangle", numpy.vstack([triangles,
                                                                                    [inner]]))],

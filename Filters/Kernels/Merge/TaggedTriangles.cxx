@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 namespace cgmesh
 {
@@ -207,7 +206,7 @@ std::vector<TriangleChild> findTriangleChildren(const TetMesh& input,
 
   // Candidates from every tet face whose corners all lie on tagged triangles; a face between two
   // tets is found twice and kept once.
-  std::vector<std::tuple<std::size_t, Face, Triangle>> found;
+  std::vector<std::pair<std::size_t, Face>> found; // (parent, sorted corners)
   for (const Tet& tet : output.tets)
   {
     for (int skip = 0; skip < 4; ++skip)
@@ -223,7 +222,7 @@ std::vector<TriangleChild> findTriangleChildren(const TetMesh& input,
       const auto range = index.find(sourceUnion(a, b, c));
       for (std::size_t e = range.first; e < range.second; ++e)
       {
-        found.emplace_back(index.entries[e].second, face, face);
+        found.emplace_back(index.entries[e].second, face);
       }
     }
   }
@@ -233,7 +232,7 @@ std::vector<TriangleChild> findTriangleChildren(const TetMesh& input,
   children.reserve(found.size());
   for (const auto& entry : found)
   {
-    TriangleChild child{ std::get<0>(entry), std::get<2>(entry) };
+    TriangleChild child{ entry.first, entry.second };
     if (dot(triangleNormal(output, child.corners), triangleNormal(input, triangles[child.parent])) <
       0)
     {
