@@ -84,6 +84,15 @@ bool isSameFile(const std::string& first, const std::string& second)
   return canonical(first) == canonical(second);
 }
 
+// The name that stands for a mesh file when names are compared: a TetGen mesh is its .ele file, as
+// its .node, .ele and .face files share a base name ("a.1.node" and "a.1.ele" are one mesh).
+std::string meshFileKey(const std::string& fileName)
+{
+  if (!isTetGenFileName(fileName))
+    return fileName;
+  return std::filesystem::path(fileName).replace_extension(".ele").string();
+}
+
 // The files of a command as (role, name), the one read first: fails with an InvalidOption status
 // when a file written later is the same as an earlier one. Empty names are skipped.
 Status checkDistinctFiles(const std::vector<std::pair<std::string, std::string>>& files)
@@ -94,7 +103,8 @@ Status checkDistinctFiles(const std::vector<std::pair<std::string, std::string>>
     {
       const auto& [laterRole, laterName] = files[later];
       const auto& [earlierRole, earlierName] = files[earlier];
-      if (laterName.empty() || earlierName.empty() || !isSameFile(earlierName, laterName))
+      if (laterName.empty() || earlierName.empty() ||
+        !isSameFile(meshFileKey(earlierName), meshFileKey(laterName)))
         continue;
       return Status::failure(ErrorKind::InvalidOption,
         laterRole + " '" + laterName + "' is the same file as " + earlierRole + " '" + earlierName +

@@ -224,6 +224,14 @@ def test_tetgen_files(cgmesh, tetgen, scratch):
     check(result.returncode == 0, "refine .ele: " + result.stderr)
     if result.returncode != 0:
         return
+    # The .node name of the input is the same mesh: refused before anything is written.
+    with open(source) as handle:
+        elements = handle.read()
+    result = run(cgmesh, "refine", source, source[:-4] + ".node")
+    check(result.returncode != 0 and "would overwrite IN" in result.stderr,
+          "refine a.ele a.node accepted: " + result.stderr)
+    with open(source) as handle:
+        check(handle.read() == elements, "refine a.ele a.node changed the input")
     before = read_tetgen(source[:-4])
     compare(before, read_tetgen(output[:-4]), "tetgen files")
     check(sorted(volume_figures(before, "Tag")) == [1, 2],
