@@ -5,6 +5,8 @@
 // executable's lookup scope. Only the two entry points at the end are exported.
 #include "GmshFiles.h"
 
+#include "FileTags.h"
+
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -218,11 +220,6 @@ struct CellGroup
   }
 };
 
-int integerValue(vtkDataArray* array, vtkIdType cellId, int fallback)
-{
-  return array ? static_cast<int>(std::lround(array->GetComponent(cellId, 0))) : fallback;
-}
-
 Status writeModel(
   vtkUnstructuredGrid* grid, const std::string& fileName, const WriteOptions& options)
 {
@@ -231,9 +228,7 @@ Status writeModel(
   vtkDataArray* entities = grid->GetCellData()->GetArray(EntityArrayName);
   // Cells by group; physical groups must have positive tags, so all tags are shifted when some
   // are not (a region array numbered from 0), and the file says so in the group names.
-  int shift = 0;
-  for (vtkIdType cellId = 0; tags && cellId < grid->GetNumberOfCells(); ++cellId)
-    shift = std::max(shift, 1 - integerValue(tags, cellId, 1));
+  const int shift = positiveTagShift(tags);
   std::map<CellGroup, std::vector<vtkIdType>> cellsOfGroup;
   for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
   {
@@ -241,8 +236,8 @@ Status writeModel(
     if (!kind)
       return Status::failure("cell " + std::to_string(cellId) +
         " is neither a tetrahedron, a triangle, a line nor a vertex");
-    const int tag = integerValue(tags, cellId, 1) + shift;
-    const int entity = entities && shift == 0 ? integerValue(entities, cellId, tag) : tag;
+    const int tag = tagValue(tags, cellId, 1) + shift;
+    const int entity = entities && shift == 0 ? tagValue(entities, cellId, tag) : tag;
     cellsOfGroup[{ kind->dimension, entity, tag }].push_back(cellId);
   }
 

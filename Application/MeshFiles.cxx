@@ -1,5 +1,6 @@
 #include "MeshFiles.h"
 
+#include "ExodusFiles.h"
 #include "GmshFiles.h"
 #include "TetGenFiles.h"
 #include "VTKMessages.h"
@@ -31,6 +32,7 @@ enum class FileFormat
   XML,
   Legacy,
   Gmsh,   // .msh and Medit .mesh, through Gmsh's library
+  Exodus, // Exodus II, through libexodus
   TetGen, // .node/.ele/.face, through TetGen's library
   Unknown
 };
@@ -44,6 +46,8 @@ FileFormat formatOf(const std::string& fileName)
     return FileFormat::Legacy;
   if (isGmshFileName(fileName))
     return FileFormat::Gmsh;
+  if (isExodusFileName(fileName))
+    return FileFormat::Exodus;
   if (isTetGenFileName(fileName))
     return FileFormat::TetGen;
   return FileFormat::Unknown;
@@ -51,8 +55,9 @@ FileFormat formatOf(const std::string& fileName)
 
 Status unknownFormat(const std::string& fileName)
 {
-  return Status::failure(
-    "'" + fileName + "': unknown file type (use .vtu, .vtk, .msh, .mesh, or .ele or .node)");
+  return Status::failure("'" + fileName +
+    "': unknown file type (use .vtu, .vtk, .msh, .mesh, .exo (.e, .ex2, .g, .gen), or .ele or "
+    ".node)");
 }
 
 constexpr std::pair<Compression, const char*> CompressionNames[] = { { Compression::None, "none" },
@@ -184,6 +189,8 @@ Status readUnstructuredGrid(
     return Status::failure("'" + fileName + "': no such file");
   if (format == FileFormat::Gmsh)
     return readGmshFile(fileName, grid, names);
+  if (format == FileFormat::Exodus)
+    return readExodusFile(fileName, grid, names);
   if (format == FileFormat::TetGen)
     return readTetGenFiles(fileName, grid);
 
@@ -302,9 +309,11 @@ Status writeUnstructuredGrid(
 
   vtkNew<VTKMessageCollector> messages;
   int written = 0;
-  if (format == FileFormat::Gmsh)
+  if (format == FileFormat::Gmsh || format == FileFormat::Exodus)
   {
-    const Status status = writeGmshFile(grid, temporaryName, options);
+    const Status status = format == FileFormat::Gmsh
+      ? writeGmshFile(grid, temporaryName, options)
+      : writeExodusFile(grid, temporaryName, options);
     if (!status.ok())
     {
       std::error_code ignored;

@@ -1,7 +1,8 @@
 // Reading and writing unstructured grids, the format chosen by extension: VTK XML (.vtu) and legacy
 // (.vtk) files through VTK, Gmsh (.msh) and Medit (.mesh) files through Gmsh's library (see
-// GmshFiles.h), TetGen .node/.ele/.face files through tetgenio (see TetGenFiles.h); and the checks
-// on file names and arrays that the commands make before any long work.
+// GmshFiles.h), Exodus II files through libexodus (see ExodusFiles.h), TetGen .node/.ele/.face
+// files through tetgenio (see TetGenFiles.h); and the checks on file names and arrays that the
+// commands make before any long work.
 #ifndef cgmesh_MeshFiles_h
 #define cgmesh_MeshFiles_h
 
@@ -38,26 +39,28 @@ bool isLegacyFileName(const std::string& fileName);
 // True for a .vtu (XML) file name: the only format with compression settings.
 bool isXMLFileName(const std::string& fileName);
 
-// The integer cell array that holds what Gmsh, Medit and TetGen files tag cells with (physical
-// group, reference, region attribute or face marker).
+// The integer cell array that holds what Gmsh, Medit, Exodus and TetGen files tag cells with
+// (physical group, reference, element block or side set, region attribute or face marker).
 constexpr const char* TagArrayName = "Tag";
 
-// What a file says about its tags beyond the grid's cell arrays: the names of Gmsh's physical
-// groups, by (dimension, tag), so that a refined mesh is written back with them.
+// What a file says about its tags beyond the grid's cell and point arrays, so that a refined mesh
+// is written back with it: the names of Gmsh's physical groups by (dimension, tag), which also
+// hold Exodus block (3) and side set (2) names, and Exodus node sets as point array -> set id.
 struct MeshFileNames
 {
   std::map<std::pair<int, int>, std::string> physicalNames;
+  std::map<std::string, int> nodeSets;
 };
 
 // How a grid is written.
 struct WriteOptions
 {
   Compression compression = DefaultCompression; // .vtu only
-  // Gmsh, Medit and TetGen: the integer cell array whose values become the tags (see GmshFiles.h
-  // and TetGenFiles.h).
+  // Gmsh, Medit, Exodus and TetGen: the integer cell array whose values become the tags (see
+  // GmshFiles.h, ExodusFiles.h and TetGenFiles.h).
   std::string tagArray;
   double mshVersion = 4.1;              // Gmsh: 4.1 or 2.2
-  const MeshFileNames* names = nullptr; // Gmsh: physical group names to write
+  const MeshFileNames* names = nullptr; // Gmsh and Exodus: group names and node sets to write
 };
 
 // Fails with a one-line message for a missing file, an unknown extension or a reader error.

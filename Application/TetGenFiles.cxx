@@ -1,5 +1,8 @@
 #include "TetGenFiles.h"
 
+#include "FileTags.h"
+#include "QuietStream.h"
+
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -13,7 +16,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fcntl.h>
 #include <filesystem>
 #include <unistd.h>
 #include <vector>
@@ -30,38 +32,6 @@ std::string baseNameOf(const std::string& fileName)
   return (path.parent_path() / path.stem()).string();
 }
 
-// tetgenio's load and save functions announce every file on stdout; the command's own output
-// stays clean while they run.
-class QuietStdout
-{
-public:
-  QuietStdout()
-  {
-    std::fflush(stdout);
-    this->Saved = ::dup(STDOUT_FILENO);
-    const int devNull = ::open("/dev/null", O_WRONLY);
-    if (devNull >= 0)
-    {
-      ::dup2(devNull, STDOUT_FILENO);
-      ::close(devNull);
-    }
-  }
-  ~QuietStdout()
-  {
-    std::fflush(stdout);
-    if (this->Saved >= 0)
-    {
-      ::dup2(this->Saved, STDOUT_FILENO);
-      ::close(this->Saved);
-    }
-  }
-  QuietStdout(const QuietStdout&) = delete;
-  QuietStdout& operator=(const QuietStdout&) = delete;
-
-private:
-  int Saved = -1;
-};
-
 // The files a TetGen mesh is written to, under one base name.
 constexpr const char* WrittenExtensions[] = { ".node", ".ele", ".face" };
 
@@ -69,11 +39,6 @@ constexpr const char* WrittenExtensions[] = { ".node", ".ele", ".face" };
 std::vector<char> cString(const std::string& text)
 {
   return std::vector<char>(text.c_str(), text.c_str() + text.size() + 1);
-}
-
-int integerValue(vtkDataArray* array, vtkIdType id)
-{
-  return array ? static_cast<int>(std::lround(array->GetComponent(id, 0))) : 0;
 }
 
 } // namespace
@@ -99,7 +64,7 @@ Status readTetGenFiles(const std::string& fileName, vtkUnstructuredGrid* grid)
   std::vector<char> name = cString(base);
   bool loaded = false;
   {
-    const QuietStdout quiet;
+    const QuietStream quiet(stdout, STDOUT_FILENO);
     loaded = io.load_node(name.data()) && io.load_tet(name.data());
     std::error_code error;
     if (loaded && std::filesystem::is_regular_file(base + ".face", error))
@@ -191,7 +156,7 @@ Status writeTetGenFiles(
   {
     io.pointmarkerlist = new int[io.numberofpoints];
     for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
-      io.pointmarkerlist[p] = integerValue(markers, p);
+      io.pointmarkerlist[p] = tagValue(markers, p);
   }
   const auto copyCorners = [&](vtkIdType cellId, int* destination)
   {
@@ -212,7 +177,7 @@ Status writeTetGenFiles(
   {
     copyCorners(tets[t], io.tetrahedronlist + 4 * t);
     if (tags)
-      io.tetrahedronattributelist[t] = integerValue(tags, tets[t]);
+      io.tetrahedronattributelist[t] = tagValue(tags, tets[t]);
   }
   io.numberoftrifaces = static_cast<int>(triangles.size());
   io.trifacelist = new int[3 * triangles.size()];
@@ -220,7 +185,7 @@ Status writeTetGenFiles(
   for (std::size_t f = 0; f < triangles.size(); ++f)
   {
     copyCorners(triangles[f], io.trifacelist + 3 * f);
-    io.trifacemarkerlist[f] = integerValue(tags, triangles[f]);
+    io.trifacemarkerlist[f] = tagValue(tags, triangles[f]);
   }
 
   // Written under a temporary base name, then renamed file by file.
@@ -228,7 +193,7 @@ Status writeTetGenFiles(
   const std::string temporary = base + ".partial-" + std::to_string(::getpid());
   std::vector<char> name = cString(temporary);
   {
-    const QuietStdout quiet;
+    const QuietStream quiet(stdout, STDOUT_FILENO);
     io.save_nodes(name.data());
     io.save_elements(name.data());
     io.save_faces(name.data());
