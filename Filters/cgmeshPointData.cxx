@@ -8,6 +8,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -108,6 +109,29 @@ void keepSharedLabels(vtkDataArray* source, const PointProvenance& provenance, v
   }
 }
 
+// Global point ids stay with the input points that survive; new points get ids above the input's
+// largest, in output order, so the ids stay unique and do not depend on the thread count.
+void extendGlobalIds(vtkPointData* input, const PointProvenance& provenance, vtkPointData* output)
+{
+  vtkDataArray* ids = input->GetGlobalIds();
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(provenance.offsets.size()) - 1;
+  if (!ids || ids->GetNumberOfComponents() != 1 ||
+    static_cast<vtkIdType>(provenance.inputPoints.size()) != numberOfPoints)
+  {
+    return;
+  }
+  vtkSmartPointer<vtkDataArray> extended = vtk::TakeSmartPointer(ids->NewInstance());
+  extended->SetName(ids->GetName());
+  extended->SetNumberOfTuples(numberOfPoints);
+  double next = ids->GetNumberOfTuples() > 0 ? ids->GetRange(0)[1] + 1 : 0;
+  for (vtkIdType point = 0; point < numberOfPoints; ++point)
+  {
+    const PointId inputPoint = provenance.inputPoints[point];
+    extended->SetComponent(point, 0, inputPoint >= 0 ? ids->GetComponent(inputPoint, 0) : next++);
+  }
+  output->SetGlobalIds(extended);
+}
+
 } // namespace
 
 void transferPointData(vtkPointData* input, const PointProvenance& provenance,
@@ -115,10 +139,12 @@ void transferPointData(vtkPointData* input, const PointProvenance& provenance,
 {
   interpolatePointData(input, provenance, output);
   interpolateIdTypeArrays(input, provenance, output);
+  extendGlobalIds(input, provenance, output);
   for (int index = 0; index < input->GetNumberOfArrays(); ++index)
   {
     vtkDataArray* source = input->GetArray(index);
     if (!source || !source->GetName() || !isIntegerDataType(source->GetDataType()) ||
+      source == input->GetGlobalIds() ||
       std::find(interpolatedArrays.begin(), interpolatedArrays.end(), source->GetName()) !=
         interpolatedArrays.end())
     {

@@ -16,9 +16,10 @@ namespace cgmesh
 
 // Floating-point arrays get the provenance-weighted sum (exact for linear fields); so do the
 // integer arrays named in `interpolatedArrays`, rounded to the nearest integer. Every other integer
-// array (global and pedigree ids aside, which are not carried over) is a labelling, such as a node
-// set or a contact flag: a point takes the value, component by component, that all its sources
-// with a non-zero weight share, else 0, so no label appears away from where it was.
+// array (global and pedigree ids aside) is a labelling, such as a node set or a contact flag: a
+// point takes the value, component by component, that all its sources with a non-zero weight
+// share, else 0, so no label appears away from where it was. Global point ids are extended: input
+// points keep theirs, new points are numbered on from the largest. Pedigree ids are dropped.
 void transferPointData(vtkPointData* input, const PointProvenance& provenance,
   const std::vector<std::string>& interpolatedArrays, vtkPointData* output);
 

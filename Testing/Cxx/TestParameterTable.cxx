@@ -42,8 +42,6 @@ double naturalMaximum(ParameterKind kind)
   {
     case ParameterKind::Integer:
       return 2147483647.0;
-    case ParameterKind::Count:
-      return cgmesh::LargestExactCount;
     default:
       return cgmesh::Unbounded;
   }
@@ -137,6 +135,13 @@ void checkDomain(const ParameterSpec& spec, vtkXMLDataElement* property)
   {
     CGMESH_CHECK(property->FindNestedElementWithName("BooleanDomain") != nullptr,
       spec.name << ": no boolean domain");
+  }
+  else if (spec.kind == ParameterKind::Count)
+  {
+    // ParaView 5.11 has no range domain for IdType properties (an IdTypeRangeDomain element is
+    // an error on every plugin load); the filter's setter clamps to the table's range instead.
+    CGMESH_CHECK(childWithTagSuffix(property, "RangeDomain") == nullptr,
+      spec.name << ": a range domain on an IdType property, which ParaView 5.11 cannot create");
   }
   else if (spec.kind != ParameterKind::Text)
   {

@@ -130,8 +130,8 @@ PointProvenance expandProvenance(PointId inputPointCount,
 }
 
 // The provenance of the points some tet uses (outputIdOf >= 0), in output order.
-void keepProvenanceOfUsedPoints(
-  const PointProvenance& all, const std::vector<PointId>& outputIdOf, PointProvenance& kept)
+void keepProvenanceOfUsedPoints(const PointProvenance& all, const std::vector<PointId>& outputIdOf,
+  PointId inputPointCount, PointProvenance& kept)
 {
   kept.offsets.push_back(0);
   for (std::size_t p = 0; p < outputIdOf.size(); ++p)
@@ -145,6 +145,8 @@ void keepProvenanceOfUsedPoints(
     kept.weights.insert(kept.weights.end(), all.weights.begin() + all.offsets[p],
       all.weights.begin() + all.offsets[p + 1]);
     kept.offsets.push_back(static_cast<std::int64_t>(kept.sources.size()));
+    kept.inputPoints.push_back(
+      static_cast<PointId>(p) < inputPointCount ? static_cast<PointId>(p) : -1);
   }
 }
 
@@ -197,7 +199,7 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
     {
       keepProvenanceOfUsedPoints(
         expandProvenance(inputPointCount, newPointSources, coordinates, relocation), outputIdOf,
-        merged.provenance);
+        inputPointCount, merged.provenance);
     }
 
     const bool hasRegions = std::any_of(partitions.begin(), partitions.end(),

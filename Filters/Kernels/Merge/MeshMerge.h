@@ -16,12 +16,14 @@ namespace cgmesh
 
 // Output point i is the weighted sum of input points
 // sources[offsets[i] .. offsets[i + 1]) with the matching weights: linear interpolation of point
-// data. Input points that survive have a single source with weight 1.
+// data. Input points that survive have a single source with weight 1, unless improvement moved
+// them; `inputPoints` tells them apart either way.
 struct PointProvenance
 {
   std::vector<std::int64_t> offsets;
   std::vector<PointId> sources;
   std::vector<double> weights;
+  std::vector<PointId> inputPoints; // per output point: the input point it is, or -1 if new
 };
 
 struct MergedMesh
