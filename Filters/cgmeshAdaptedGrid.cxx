@@ -38,26 +38,6 @@ void addCellArray(vtkCellData* cellData, const char* name, const Values& perTet,
   cellData->AddArray(array);
 }
 
-// Comma-separated names, trimmed; empty entries dropped.
-std::vector<std::string> splitNames(const std::string& text)
-{
-  std::vector<std::string> names;
-  std::size_t start = 0;
-  while (start <= text.size())
-  {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    std::string name = text.substr(start, comma - start);
-    name.erase(0, name.find_first_not_of(" \t"));
-    name.erase(name.find_last_not_of(" \t") + 1);
-    if (!name.empty())
-    {
-      names.push_back(name);
-    }
-    start = comma + 1;
-  }
-  return names;
-}
-
 } // namespace
 
 void fillAdaptedGrid(
@@ -86,7 +66,8 @@ void fillAdaptedGrid(
   if (!result.provenance.offsets.empty() && input.grid->GetPointData()->GetNumberOfArrays() > 0)
   {
     transferPointData(input.grid->GetPointData(), result.provenance,
-      splitNames(input.interpolatedPointArrays), output->GetPointData());
+      splitNames(input.interpolatedPointArrays), splitNames(input.labelPointArrays),
+      output->GetPointData());
   }
 
   vtkCellData* cellData = output->GetCellData();

@@ -22,6 +22,7 @@ struct AdaptedGridInput
   const TetMesh* mesh = nullptr;            // its tetrahedra as adapted
   const TriangleCells* triangles = nullptr; // null when the input has only tetrahedra
   std::string interpolatedPointArrays;      // comma-separated integer point arrays to interpolate
+  std::string labelPointArrays;             // comma-separated floating-point arrays kept as labels
 };
 
 // Fills `output`. The cells of the run's arrays that are triangles get -1 (PartitionId, ColorId),

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace cgmesh
 {
@@ -135,18 +136,27 @@ void extendGlobalIds(vtkPointData* input, const PointProvenance& provenance, vtk
 } // namespace
 
 void transferPointData(vtkPointData* input, const PointProvenance& provenance,
-  const std::vector<std::string>& interpolatedArrays, vtkPointData* output)
+  const std::vector<std::string>& interpolatedArrays, const std::vector<std::string>& labelArrays,
+  vtkPointData* output)
 {
+  const auto named = [](const std::vector<std::string>& names, const char* name)
+  {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
   interpolatePointData(input, provenance, output);
   interpolateIdTypeArrays(input, provenance, output);
   extendGlobalIds(input, provenance, output);
   for (int index = 0; index < input->GetNumberOfArrays(); ++index)
   {
     vtkDataArray* source = input->GetArray(index);
-    if (!source || !source->GetName() || !isIntegerDataType(source->GetDataType()) ||
-      source == input->GetGlobalIds() ||
-      std::find(interpolatedArrays.begin(), interpolatedArrays.end(), source->GetName()) !=
-        interpolatedArrays.end())
+    if (!source || !source->GetName() || source == input->GetGlobalIds())
+    {
+      continue;
+    }
+    const bool label = isIntegerDataType(source->GetDataType())
+      ? !named(interpolatedArrays, source->GetName())
+      : named(labelArrays, source->GetName());
+    if (!label)
     {
       continue;
     }
@@ -155,6 +165,73 @@ void transferPointData(vtkPointData* input, const PointProvenance& provenance,
       keepSharedLabels(source, provenance, labels);
     }
   }
+}
+
+Status checkPointArrayRoles(vtkPointData* input, const std::vector<std::string>& interpolatedArrays,
+  const std::vector<std::string>& labelArrays)
+{
+  const auto missing = [input](const std::string& name, const char* property)
+  {
+    std::string known;
+    for (int index = 0; index < input->GetNumberOfArrays(); ++index)
+    {
+      const char* arrayName = input->GetArrayName(index);
+      if (arrayName && input->GetArray(index))
+        known += (known.empty() ? "'" : ", '") + std::string(arrayName) + "'";
+    }
+    return Status::failure(std::string(property) + " names '" + name +
+      "', which is no numeric point array of the input (its numeric point arrays: " +
+      (known.empty() ? std::string("none") : known) + ")");
+  };
+  for (const std::string& name : interpolatedArrays)
+  {
+    if (!input->GetArray(name.c_str()))
+      return missing(name, "InterpolatedPointArrays");
+  }
+  for (const std::string& name : labelArrays)
+  {
+    vtkDataArray* array = input->GetArray(name.c_str());
+    if (!array)
+      return missing(name, "LabelPointArrays");
+    if (std::find(interpolatedArrays.begin(), interpolatedArrays.end(), name) !=
+      interpolatedArrays.end())
+      return Status::failure("point array '" + name +
+        "' is named both in InterpolatedPointArrays and in LabelPointArrays");
+    for (vtkIdType point = 0; point < array->GetNumberOfTuples(); ++point)
+    {
+      for (int component = 0; component < array->GetNumberOfComponents(); ++component)
+      {
+        const double value = array->GetComponent(point, component);
+        if (!std::isfinite(value))
+        {
+          std::ostringstream message;
+          message << "point array '" << name << "' (LabelPointArrays) holds " << value
+                  << " at point " << point << "; labels must be finite numbers";
+          return Status::failure(message.str());
+        }
+      }
+    }
+  }
+  return Status::success();
+}
+
+std::vector<std::string> splitNames(const std::string& text)
+{
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size())
+  {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string name = text.substr(start, comma - start);
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    if (!name.empty())
+    {
+      names.push_back(name);
+    }
+    start = comma + 1;
+  }
+  return names;
 }
 
 } // namespace cgmesh

@@ -2,6 +2,7 @@
 
 #include "cgmeshAdaptedGrid.h"
 #include "cgmeshMaterialLabels.h"
+#include "cgmeshPointData.h"
 #include "cgmeshTetQuality.h"
 #include "cgmeshTriangleCells.h"
 #include "cgmeshVTKConversion.h"
@@ -412,6 +413,14 @@ bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
                      "array of material/region ids to cut along.");
     return false;
   }
+  const cgmesh::Status pointArrays = cgmesh::checkPointArrayRoles(input->GetPointData(),
+    cgmesh::splitNames(this->Internals->Parameters.interpolatedPointArrays),
+    cgmesh::splitNames(this->Internals->Parameters.labelPointArrays));
+  if (!pointArrays.ok())
+  {
+    vtkErrorMacro(<< pointArrays.message() << ".");
+    return false;
+  }
   return true;
 }
 
@@ -503,6 +512,7 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   adapted.mesh = &inputMesh;
   adapted.triangles = withTriangles ? &triangles : nullptr;
   adapted.interpolatedPointArrays = this->Internals->Parameters.interpolatedPointArrays;
+  adapted.labelPointArrays = this->Internals->Parameters.labelPointArrays;
   cgmesh::fillAdaptedGrid(adapted, result, output);
   this->UpdateProgress(0.9);
   const cgmesh::Stopwatch qualityStopwatch;

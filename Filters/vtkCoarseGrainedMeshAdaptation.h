@@ -115,7 +115,9 @@ public:
    * input is an error.
    * InterpolatedPointArrays (empty): integer point arrays to interpolate and round like fields;
    * every other integer point array is a labelling (node sets, contact flags): a new point takes
-   * the value all its sources share, else 0.
+   * the value all its sources share, else 0. LabelPointArrays (empty): floating-point point
+   * arrays to treat as such labels too (flags stored as floats); their values must be finite.
+   * Either list naming an array the input does not have is an error.
    * PartitionByRegion (off) and PartitionsPerRegion (1): cut along the regions instead of METIS on
    * the whole mesh (needs RegionArrayName).
    * ColoringAlgorithm (GREEDY_LEAST_USED), Method (TEMPLATE), NumberOfIterations (1).
@@ -134,6 +136,7 @@ public:
   cgmeshParameterMacro(Partitioner, int);
   cgmeshTextParameterMacro(RegionArrayName);
   cgmeshTextParameterMacro(InterpolatedPointArrays);
+  cgmeshTextParameterMacro(LabelPointArrays);
   cgmeshBooleanParameterMacro(PartitionByRegion);
   cgmeshParameterMacro(PartitionsPerRegion, int);
   cgmeshParameterMacro(ColoringAlgorithm, int);

@@ -54,6 +54,8 @@ struct AdaptationOptions
   // Integer point arrays to interpolate (and round) like fields, comma-separated; the others are
   // labels (read by the VTK adapter).
   std::string interpolatedPointArrays;
+  // Floating-point point arrays to treat as labels, comma-separated (read by the VTK adapter).
+  std::string labelPointArrays;
   double maximumVolume{};
   double volumeFactor{};
   double radiusEdgeRatio{};
@@ -113,6 +115,10 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "comma-separated integer point arrays to interpolate and round like fields; the other "
       "integer point arrays are labels: a new point takes the value its sources share, else 0",
       &O::interpolatedPointArrays },
+    { "LabelPointArrays", "--label-arrays", "NAMES", K::Text, 0, 0, 0, "", S::Any,
+      "comma-separated floating-point point arrays to keep as labels (flags stored as floats): a "
+      "new point takes the value its sources share, else 0; their values must be finite",
+      &O::labelPointArrays },
     { "PartitionByRegion", "--partition-by-region", "", K::Boolean, 0, 1, 0, "", S::Any,
       "cut along the regions of RegionArrayName instead of METIS on the whole mesh: no partition "
       "holds two regions",

@@ -704,20 +704,43 @@ reader = vtkXMLUnstructuredGridReader()
 reader.SetFileName(sys.argv[1])
 reader.Update()
 grid = reader.GetOutput()
-contact = grid.GetPointData().GetArray("OnContact")
+contact = grid.GetPointData().GetArray(sys.argv[2])
 xmin = grid.GetBounds()[0]
-marked = [p for p in range(grid.GetNumberOfPoints()) if contact.GetValue(p) != 0]
+marked = [p for p in range(grid.GetNumberOfPoints()) if contact.GetComponent(p, 0) != 0]
 off = [p for p in marked if grid.GetPoint(p)[0] != xmin]
 on = [p for p in range(grid.GetNumberOfPoints()) if grid.GetPoint(p)[0] == xmin]
 print(len(marked), len(off), len(on))
 """
 
+# Adds OnContactFloat, OnContact as doubles (a flag as numpy or meshio stores it), with NaN at
+# point argv[3] when it is not -1.
+ADD_FLOAT_FLAGS = """import sys
+from vtkmodules.vtkCommonCore import vtkDoubleArray
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+reader = vtkXMLUnstructuredGridReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+grid = reader.GetOutput()
+contact = grid.GetPointData().GetArray("OnContact")
+flags = vtkDoubleArray()
+flags.SetName("OnContactFloat")
+for point in range(grid.GetNumberOfPoints()):
+    flags.InsertNextValue(float(contact.GetValue(point)))
+if int(sys.argv[3]) >= 0:
+    flags.SetValue(int(sys.argv[3]), float("nan"))
+grid.GetPointData().AddArray(flags)
+writer = vtkXMLUnstructuredGridWriter()
+writer.SetInputData(grid)
+writer.SetFileName(sys.argv[2])
+sys.exit(0 if writer.Write() == 1 else 1)
+"""
 
-def marked_points(path):
-    """(marked, marked off the x = xmin plane, points on the plane) of the OnContact array."""
-    result = subprocess.run([sys.executable, "-c", MARKED_POINTS, path], capture_output=True,
-                            text=True)
-    check(result.returncode == 0, "cannot read OnContact of " + path + ": " + result.stderr)
+
+def marked_points(path, array="OnContact"):
+    """(marked, marked off the x = xmin plane, points on the plane) of a flag point array."""
+    result = subprocess.run([sys.executable, "-c", MARKED_POINTS, path, array],
+                            capture_output=True, text=True)
+    check(result.returncode == 0, "cannot read %s of %s: %s" % (array, path, result.stderr))
     return tuple(int(word) for word in result.stdout.split()) if result.returncode == 0 else None
 
 
@@ -739,6 +762,34 @@ def test_point_labels(cgmesh, scratch):
     rounded = marked_points(interpolated)
     if rounded:
         check(rounded[1] > 0, "--interpolate-arrays OnContact left it a labelling %s" % (rounded,))
+    result = run(cgmesh, "refine", labelled, interpolated, "--interpolate-arrays", "OnContakt")
+    check(result.returncode == 1 and "InterpolatedPointArrays names 'OnContakt'" in result.stderr
+          and "'OnContact'" in result.stderr, "--interpolate-arrays with a typo: " + result.stderr)
+
+    # The same flag stored as doubles: a field by default (interpolated: points off the plane get
+    # 0.5), a labelling with --label-arrays, and refused when it holds a NaN.
+    floats, with_nan = (os.path.join(scratch, name) for name in ("float-flags.vtu", "nan-flags.vtu"))
+    for path, nan_point in ((floats, "-1"), (with_nan, "17")):
+        made = subprocess.run([sys.executable, "-c", ADD_FLOAT_FLAGS, labelled, path, nan_point])
+        check(made.returncode == 0, "cannot write " + path)
+    output = os.path.join(scratch, "float-flags-refined.vtu")
+    result = run(cgmesh, "refine", floats, output)
+    as_field = marked_points(output, "OnContactFloat") if result.returncode == 0 else None
+    check(as_field is not None and as_field[1] > 0,
+          "a double flag array was not interpolated by default: %s %s" % (as_field, result.stderr))
+    result = run(cgmesh, "refine", floats, output, "--label-arrays", "OnContactFloat")
+    as_label = marked_points(output, "OnContactFloat") if result.returncode == 0 else None
+    check(as_label is not None and as_label[1] == 0 and as_label[0] == as_label[2],
+          "--label-arrays OnContactFloat: (marked, off the plane, on the plane) %s %s"
+          % (as_label, result.stderr))
+    refused = os.path.join(scratch, "nan-flags-refined.vtu")
+    expect_early_error(cgmesh, scratch, "a NaN label",
+                       ["refine", with_nan, refused, "--label-arrays", "OnContactFloat"], refused,
+                       1, "point array 'OnContactFloat' (LabelPointArrays) holds nan at point 17")
+    expect_early_error(cgmesh, scratch, "an array in both lists",
+                       ["refine", floats, refused, "--label-arrays", "OnContactFloat",
+                        "--interpolate-arrays", "OnContactFloat"], refused, 1,
+                       "named both in InterpolatedPointArrays and in LabelPointArrays")
 
 
 def test_size_forecast(cgmesh, scratch):
