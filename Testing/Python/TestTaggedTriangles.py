@@ -3,7 +3,8 @@ formats. First on a mesh Gmsh makes: two stacked boxes
 and a ball inside the lower one (three physical volumes), with physical surfaces on the bottom,
 the top, the box interface and the ball's curved surface, converted to .vtu by meshio as a Gmsh
 user would. Both methods, with and without a region array: the output, read back by meshio, must
-keep every tag; each tag's triangles must cover the same surface (area and vector area conserved,
+keep every tag, with each planar surface's nodes exactly the nodes on its plane (node sets
+exact); each tag's triangles must cover the same surface (area and vector area conserved,
 so the orientation is kept too) with more triangles than before; every triangle must be a boundary
 or material-interface face of the output tets; every physical volume keeps its volume; 1 and 2
 threads write the same bytes; and the input errors name the offending cells. The same mesh then
@@ -129,6 +130,22 @@ def compare(before, after, description, array="Tag"):
     check(bad == 0, "%s: %d triangles are no boundary or interface face" % (description, bad))
 
 
+# Physical surfaces on planes: (axis, value) by tag.
+PLANE_SURFACES = {11: (2, 0.0), 12: (2, 0.5), 14: (2, 1.0)}
+
+
+def check_node_sets(after, array, description):
+    """The nodes of each planar physical surface (its node set, as Gmsh takes a physical group's
+    nodes) are exactly the output nodes on its plane: none off it, none on it missing."""
+    triangles, tags = cells_of(after, "triangle", array)
+    for tag, (axis, value) in PLANE_SURFACES.items():
+        nodes = set(numpy.unique(triangles[tags == tag]).tolist())
+        on_plane = set(numpy.flatnonzero(after.points[:, axis] == value).tolist())
+        check(nodes and nodes == on_plane,
+              "%s: node set of tag %d has %d nodes, %d off its plane, %d on it missing"
+              % (description, tag, len(nodes), len(nodes - on_plane), len(on_plane - nodes)))
+
+
 def test_file_formats(cgmesh, gmsh, scratch, mesh):
     """Gmsh .msh in, .msh 4.1 and 2.2 and Medit .mesh out: the tags, areas and volumes as through
     .vtu, the physical names kept, and Gmsh itself reads every output back."""
@@ -147,7 +164,9 @@ def test_file_formats(cgmesh, gmsh, scratch, mesh):
         check(result.returncode == 0, "%s: %s" % (description, result.stderr))
         if result.returncode != 0:
             continue
-        compare(mesh, meshio.read(output), description, array)
+        refined = meshio.read(output)
+        compare(mesh, refined, description, array)
+        check_node_sets(refined, array, description)
         if name.endswith(".msh"):
             with open(output) as handle:
                 text = handle.read()
@@ -283,7 +302,9 @@ def test_refinement(cgmesh, scratch, path, mesh):
                   re.search(r"^triangles on no tet face +0$", checked.stdout, re.MULTILINE),
                   "%s: cgmesh check: %s" % (description, checked.stdout[-1500:]))
             if threads == "2":
-                compare(mesh, meshio.read(output), description)
+                refined = meshio.read(output)
+                compare(mesh, refined, description)
+                check_node_sets(refined, "Tag", description)
         check(len(digests) == 1, "%s: 1 and 2 threads wrote different files" % description)
     volumes, status = region_volumes(cgmesh, path, "Tag")
     check(status == 0 and sorted(volumes) == [1, 2, 3], "input check: %s %d" % (volumes, status))
