@@ -7,7 +7,9 @@
 // the elementary entity it was meshed on. Cells of an entity that belongs to no physical group get
 // the entity's tag as their `Tag`; an entity in several physical groups is read once, under the
 // first. Writing is the reverse: one discrete entity per (dimension, Entity) and one physical
-// group per (dimension, Tag), so physical volumes and surfaces survive the round trip. Point data
+// group per (dimension, Tag), so physical volumes and surfaces survive the round trip; each node
+// is classified on the lowest-dimensional entity of its cells, as in Gmsh's own meshes (Medit
+// vertex references are those entities). Point data
 // and other cell arrays are not stored: the formats have no place for them.
 #ifndef cgmesh_GmshFiles_h
 #define cgmesh_GmshFiles_h

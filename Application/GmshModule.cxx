@@ -21,6 +21,7 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <set>
 #include <tuple>
@@ -273,14 +274,37 @@ Status writeModel(
   if (nodeEntityDimension < 0)
     return Status::failure("the mesh has no cells");
 
-  std::vector<std::size_t> nodeTags(static_cast<std::size_t>(grid->GetNumberOfPoints()));
-  std::vector<double> coordinates(3 * nodeTags.size());
+  // Each node lives on the lowest-dimensional entity among its cells', as Gmsh classifies the
+  // nodes of its own meshes (boundary nodes on surfaces): Medit files number vertex references
+  // by it. Nodes of no cell go to the entity of the highest dimension.
+  using EntityKey = std::pair<int, int>; // (dimension, entity)
+  const EntityKey unclassified{ std::numeric_limits<int>::max(), 0 };
+  std::vector<EntityKey> homeOf(static_cast<std::size_t>(grid->GetNumberOfPoints()), unclassified);
+  for (const auto& [group, cells] : cellsOfGroup)
+  {
+    const EntityKey key{ group.dimension, entityOfGroup.at(group) };
+    for (const vtkIdType cellId : cells)
+    {
+      const vtkIdType* corners;
+      vtkIdType count;
+      grid->GetCellPoints(cellId, count, corners);
+      for (vtkIdType c = 0; c < count; ++c)
+        homeOf[corners[c]] = std::min(homeOf[corners[c]], key);
+    }
+  }
+  std::map<EntityKey, std::pair<std::vector<std::size_t>, std::vector<double>>> nodesOf;
   for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
   {
-    nodeTags[p] = static_cast<std::size_t>(p) + 1;
-    grid->GetPoint(p, &coordinates[3 * p]);
+    const EntityKey home =
+      homeOf[p] == unclassified ? EntityKey{ nodeEntityDimension, nodeEntity } : homeOf[p];
+    auto& [tags, coordinates] = nodesOf[home];
+    tags.push_back(static_cast<std::size_t>(p) + 1);
+    double point[3];
+    grid->GetPoint(p, point);
+    coordinates.insert(coordinates.end(), point, point + 3);
   }
-  gmsh::model::mesh::addNodes(nodeEntityDimension, nodeEntity, nodeTags, coordinates);
+  for (const auto& [home, nodes] : nodesOf)
+    gmsh::model::mesh::addNodes(home.first, home.second, nodes.first, nodes.second);
 
   for (const auto& [group, cells] : cellsOfGroup)
   {

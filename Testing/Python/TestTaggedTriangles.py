@@ -167,6 +167,19 @@ def test_file_formats(cgmesh, gmsh, scratch, mesh):
         refined = meshio.read(output)
         compare(mesh, refined, description, array)
         check_node_sets(refined, array, description)
+        if name.endswith(".mesh"):
+            # Vertex references are the nodes' entities, as Gmsh writes them: surface nodes
+            # carry their surface's, the others their volume's.
+            references = numpy.asarray(refined.point_data["medit:ref"])
+            triangles, _ = cells_of(refined, "triangle", array)
+            on_surfaces = numpy.zeros(len(references), dtype=bool)
+            on_surfaces[numpy.unique(triangles)] = True
+            surface_refs = set(references[on_surfaces].tolist())
+            volume_refs = set(references[~on_surfaces].tolist())
+            check(len(surface_refs) > 1 and len(volume_refs) > 1 and
+                  not surface_refs & volume_refs,
+                  "medit: vertex references %s on surfaces, %s elsewhere"
+                  % (sorted(surface_refs), sorted(volume_refs)))
         if name.endswith(".msh"):
             with open(output) as handle:
                 text = handle.read()
