@@ -11,7 +11,8 @@ Delaunay), .msh -> .exo and .exo -> .msh. Every Exodus output, read by IOSS, mus
 - each node set exactly the output nodes on its plane (a node set off its plane, or a node on the
   plane missing from it, fails);
 - the names of the Gmsh physical groups, kept from .msh to .exo and back to .msh.
-Bad Exodus inputs (a hexahedron block, a file that is not Exodus) get one-line errors."""
+meshio (with netCDF4) reads them too, with the same points, tets and node sets. Bad Exodus inputs
+(a hexahedron block, a file that is not Exodus) get one-line errors."""
 import argparse
 import os
 import shutil
@@ -84,6 +85,23 @@ def read_exodus(path):
     return mesh, names
 
 
+def check_meshio_reads(path, expected, description):
+    """meshio (with netCDF4) reads the file too: the same points, tets and node sets as IOSS (it
+    reads no side sets)."""
+    mesh = meshio.read(path)
+    tets = sum(len(block.data) for block in mesh.cells if block.type == "tetra")
+    expected_tets = sum(len(block.data) for block in expected.cells if block.type == "tetra")
+    check(len(mesh.points) == len(expected.points) and tets == expected_tets,
+          "%s: meshio reads %d points and %d tets, IOSS %d and %d"
+          % (description, len(mesh.points), tets, len(expected.points), expected_tets))
+    for set_id in NODE_SETS:
+        flags = expected.point_data.get("NodeSet%d" % set_id)
+        members = mesh.point_sets.get("NodeSet%d" % set_id)
+        check(flags is not None and members is not None and
+              sorted(numpy.asarray(members).tolist()) == numpy.flatnonzero(flags).tolist(),
+              "%s: meshio's node set %d differs from IOSS's" % (description, set_id))
+
+
 def check_node_sets(mesh, description):
     """Each node set is exactly the nodes on its plane."""
     for set_id, (axis, value) in NODE_SETS.items():
@@ -118,6 +136,7 @@ def test_round_trips(cgmesh, scratch, source, mesh):
     read, _ = read_exodus(first)
     tagged.compare(mesh, read, ".vtu to .exo")
     check_node_sets(read, ".vtu to .exo")
+    check_meshio_reads(first, read, ".vtu to .exo")
 
     cases = {"template": ["--iterations", "2"],
              "delaunay": ["--method", "delaunay", "--volume-factor", "0.3"]}
@@ -136,6 +155,7 @@ def test_round_trips(cgmesh, scratch, source, mesh):
                 read, _ = read_exodus(output)
                 tagged.compare(mesh, read, label)
                 check_node_sets(read, label)
+                check_meshio_reads(output, read, label)
                 checked = run(cgmesh, "check", output, "--region-array", "Tag")
                 check(checked.returncode == 0, label + ": cgmesh check: " + checked.stdout)
         check(len(digests) == 1, ".exo to .exo, %s: 1 and 2 threads wrote different files"
