@@ -115,6 +115,7 @@ void printImprovement(const RefineStatistics& statistics, std::ostream& stream)
          << std::setw(24) << "edge removals" << statistics.edgeRemovals << "\n"
          << std::setw(24) << "face swaps" << statistics.faceSwaps << "\n"
          << std::setw(24) << "vertex moves" << statistics.vertexMoves << "\n"
+         << std::setw(24) << "edge collapses" << statistics.edgeCollapses << "\n"
          << std::setw(24) << "improve seconds" << std::fixed << std::setprecision(4)
          << phaseSeconds(statistics, "improve") << std::defaultfloat << " (" << std::setprecision(3)
          << 100.0 * improveShare(statistics) << " % of total)\n";
@@ -196,6 +197,7 @@ void writeImprovementJson(const RefineStatistics& statistics, std::ostream& file
        << ", \"edgeRemovals\": " << statistics.edgeRemovals
        << ", \"faceSwaps\": " << statistics.faceSwaps
        << ", \"vertexMoves\": " << statistics.vertexMoves
+       << ", \"edgeCollapses\": " << statistics.edgeCollapses
        << ", \"seconds\": " << jsonNumber(phaseSeconds(statistics, "improve"))
        << ", \"shareOfTotal\": " << jsonNumber(improveShare(statistics)) << "},\n"
        << "  \"quality\": {\"all\": " << qualityJson(statistics.allTets)
@@ -263,6 +265,7 @@ void collectFilterStatistics(
   statistics.edgeRemovals = summary.edgeRemovals;
   statistics.faceSwaps = summary.faceSwaps;
   statistics.vertexMoves = summary.vertexMoves;
+  statistics.edgeCollapses = summary.edgeCollapses;
   statistics.partitionTaskSeconds = summary.partitionTaskSeconds;
   statistics.warnings = summary.warnings;
   statistics.colorOfPartition.assign(

@@ -67,6 +67,7 @@ struct RefineStatistics
   std::int64_t edgeRemovals = 0; // improvement operations
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
+  std::int64_t edgeCollapses = 0;           // coarsening
   std::string compression;                  // of OUT's arrays: "none", "lz4" or "zlib"
   std::vector<double> partitionTaskSeconds; // iteration * partitions + partition
   std::vector<AdaptationWarning> warnings;  // the run's typed warnings, in order

@@ -151,6 +151,7 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addColorPopulation(fieldData, "CellsPerColor", result.cellsPerColor);
   addFieldValue(fieldData, "ColorBalance", result.colorBalance);
   addFieldValue(fieldData, "EdgeRemovals", static_cast<double>(result.edgeRemovals));
+  addFieldValue(fieldData, "EdgeCollapses", static_cast<double>(result.edgeCollapses));
   addFieldValue(fieldData, "FaceSwaps", static_cast<double>(result.faceSwaps));
   addFieldValue(fieldData, "VertexMoves", static_cast<double>(result.vertexMoves));
   // Per-partition task times and the colouring: the data for makespan models of the colour loop.

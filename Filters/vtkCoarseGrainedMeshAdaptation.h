@@ -123,7 +123,9 @@ public:
    * ColoringAlgorithm (GREEDY_LEAST_USED), Method (TEMPLATE), NumberOfIterations (1).
    * Template: MaximumEdgeLength (0: unused) or EdgeLengthFactor (0.5); or a size field:
    * SizeArrayName (a point or cell array of target edge lengths; none by default) and
-   * SizeGradation (1.3), with the cell array EdgeLengthRatio and the field data
+   * SizeGradation (1.3) and Coarsen (on: edges shorter than h / sqrt(2) are collapsed at
+   * vertices on no boundary or material interface), with the cell array EdgeLengthRatio and the
+   * field data
    * EdgesWithinSizeBounds and EdgeSizeRatioHistogram in the output. RefinementRegions ("2,5":
    * region ids) and RefinementBox ("x0,y0,z0,x1,y1,z1"): refine only there (empty: everywhere).
    * Delaunay: MaximumVolume (0: unused) or VolumeFactor (0.1), RadiusEdgeRatio (2, at least 1).
@@ -146,6 +148,7 @@ public:
   cgmeshParameterMacro(EdgeLengthFactor, double);
   cgmeshTextParameterMacro(SizeArrayName);
   cgmeshParameterMacro(SizeGradation, double);
+  cgmeshBooleanParameterMacro(Coarsen);
   cgmeshTextParameterMacro(RefinementRegions);
   cgmeshTextParameterMacro(RefinementBox);
   cgmeshParameterMacro(MaximumVolume, double);

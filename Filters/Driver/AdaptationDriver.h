@@ -44,6 +44,7 @@ struct AdaptationSummary
   std::int64_t gluedPoints = 0;     // copies of matching faces' corners merged into one point
   std::int64_t keptApartPoints = 0; // input points left distinct from a coincident one
   std::int64_t edgeRemovals = 0;    // quality improvement operations
+  std::int64_t edgeCollapses = 0;   // coarsening
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
   std::int64_t poorTets = 0; // tets below the improvement target when first looked at

@@ -49,6 +49,7 @@ struct AdaptationOptions
   double edgeLengthFactor{};
   std::string sizeArrayName; // read by the VTK adapter, which fills TetMesh::sizes
   double sizeGradation{};
+  bool coarsen{};                // with a size field: collapse edges shorter than h / sqrt(2)
   std::string refinementRegions; // "2,5": region ids (parsed into the plan)
   std::string refinementBox;     // "x0,y0,z0,x1,y1,z1"
   // Integer point arrays to interpolate (and round) like fields, comma-separated; the others are
@@ -151,6 +152,11 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "with SizeArrayName: the field is lowered until neighbouring points' sizes differ by at "
       "most this factor per edge (as MMG's -hgrad); a large value leaves it as given",
       &O::sizeGradation },
+    { "Coarsen", "--no-coarsen", "", K::Boolean, 0, 1, 1, "", S::Template,
+      "with SizeArrayName: collapse edges shorter than h / sqrt(2) at vertices on no boundary or "
+      "material interface, keeping every tet valid and no worse than mean ratio 0.3 (or its "
+      "ring's worst); --no-coarsen only refines",
+      &O::coarsen },
     { "RefinementRegions", "--refine-regions", "IDS", K::Text, 0, 0, 0, "", S::Template,
       "comma-separated region ids of RegionArrayName: only their tets are refined, the others "
       "only where they share a face with them (closure templates); empty: every region",

@@ -188,7 +188,12 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
     {
       const int p = members[i];
       PartitionRefinement& refinement = iteration.refinements[p];
-      const PartitionPoints points{ &state.coordinates, &refinement.newCoordinates };
+      PartitionPoints points{ &state.coordinates, &refinement.newCoordinates };
+      if (iteration.setup.sizeField)
+      {
+        points.globalSizes = &state.sizes;
+        points.provisionalSizes = &refinement.newSizes;
+      }
       outcomes[i] = improvePartition(state.partitions[p], points, iteration.setup.improvement,
         statistics[i], refinement.movedPoints);
     });
@@ -197,6 +202,7 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
     summary.edgeRemovals += statistics[i].edgeRemovals;
     summary.faceSwaps += statistics[i].faceSwaps;
     summary.vertexMoves += statistics[i].vertexMoves;
+    summary.edgeCollapses += statistics[i].edgeCollapses;
     summary.poorTets += statistics[i].poorTets;
     if (!outcomes[i].ok())
     {

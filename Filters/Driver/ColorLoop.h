@@ -49,6 +49,7 @@ struct ColorLoopSetup
   bool refine = true;                    // false: a sweep of quality improvement only
   std::int64_t maximumNumberOfCells = 0; // refuse an iteration forecast to exceed it (0: no limit)
   bool improve = false;
+  bool sizeField = false; // the points carry the input's size field (AdaptationState::sizes)
   ImprovementParameters improvement;
   // Where the loop's progress goes: `stage`, from `progressStart` to `progressEnd` of it.
   Stage stage = Stage::Refine;

@@ -121,7 +121,7 @@ Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
   const AdaptationOptions& options, int boxesPerAxis, const std::vector<char>& formerInterface,
   AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
 {
-  if (refinementSetup.improve && summary.poorTets == 0)
+  if (refinementSetup.improve && summary.poorTets == 0 && !refinementSetup.improvement.coarsen)
   {
     return Status::success(); // improvement in partitions saw no poor tet: no seam to work on
   }

@@ -1,8 +1,11 @@
 // Size fields: gradation limiting, refinement to a graded field through adaptMesh() (converged,
 // every edge at most sqrt(2) h at its midpoint, conforming, volumes and regions conserved, the
-// same output for any thread count) and the refusal of bad fields.
+// same output for any thread count), coarsening where the field is coarser than the mesh, and
+// the refusal of bad fields.
 #include "AdaptationDriver.h"
+#include "Core/ConstrainedFaces.h"
 #include "Core/Geometry.h"
+#include "Core/TetQuality.h"
 #include "CubeGenerator.h"
 #include "MeshChecks.h"
 #include "Refinement/SizeField.h"
@@ -111,6 +114,89 @@ void test_refinement_to_a_graded_field()
     CHECK(adaptMesh(input, options, parallel).ok());
     CHECK(cgmesh_test::identicalResults(serial, parallel));
     CHECK(parallel.mesh.sizes == serial.mesh.sizes);
+  }
+}
+
+// The coordinates of the points on boundary and region-interface faces, sorted.
+std::vector<std::array<double, 3>> constrainedPoints(const TetMesh& mesh)
+{
+  PartitionMesh whole;
+  whole.tets = mesh.tets;
+  whole.regions = mesh.regions;
+  whole.parentCells.assign(mesh.tets.size(), 0);
+  std::vector<Face> boundaryFaces, interfaceFaces;
+  findConstrainedFaces(whole, boundaryFaces, interfaceFaces);
+  std::vector<std::array<double, 3>> points;
+  for (const auto* faces : { &boundaryFaces, &interfaceFaces })
+  {
+    for (const Face& face : *faces)
+    {
+      for (PointId p : face)
+      {
+        points.push_back({ mesh.point(p)[0], mesh.point(p)[1], mesh.point(p)[2] });
+      }
+    }
+  }
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
+double worstMeanRatio(const TetMesh& mesh)
+{
+  double worst = 1;
+  for (const Tet& tet : mesh.tets)
+  {
+    worst = std::min(worst,
+      meanRatio(mesh.point(tet[0]), mesh.point(tet[1]), mesh.point(tet[2]), mesh.point(tet[3])));
+  }
+  return worst;
+}
+
+// A field finer than the mesh on the left half (x < 0.5) and coarser on the right: refinement on
+// the left, collapses on the right. Against the same run without coarsening: edges collapsed,
+// fewer points, more edges within [h / sqrt(2), sqrt(2) h]; still valid and conserving; every
+// boundary and interface point where it was (none removed, none added by coarsening); no tet
+// worse than min(0.3, the uncoarsened run's worst); the same output for any thread count.
+void test_coarsening_where_the_field_is_coarse()
+{
+  TetMesh input;
+  CHECK(generateKuhnCube(12, input).ok());
+  for (PointId p = 0; p < input.numberOfPoints(); ++p)
+  {
+    input.sizes.push_back(input.point(p)[0] < 0.5 ? 0.06 : 0.3);
+  }
+  for (const Tet& tet : input.tets)
+  {
+    input.regions.push_back(input.point(tet[0])[2] + input.point(tet[3])[2] < 1.0 ? 1 : 2);
+  }
+  AdaptationOptions options;
+  options.numberOfIterations = 6;
+  options.numberOfPartitions = 16;
+  options.numberOfThreads = 1;
+  options.sizeGradation = 1e6; // the step as given
+  CHECK(options.coarsen); // on by default
+  AdaptationResult coarsened, refinedOnly;
+  CHECK(adaptMesh(input, options, coarsened).ok());
+  options.coarsen = false;
+  CHECK(adaptMesh(input, options, refinedOnly).ok());
+  CHECK_EQUAL(refinedOnly.summary.edgeCollapses, 0);
+  CHECK(coarsened.summary.edgeCollapses > 100);
+  CHECK(coarsened.mesh.numberOfPoints() < refinedOnly.mesh.numberOfPoints());
+  CHECK(coarsened.summary.edgeSizes.shareWithinBounds >
+    refinedOnly.summary.edgeSizes.shareWithinBounds + 0.02);
+
+  cgmesh_test::checkValidAndConserving(input, coarsened.mesh);
+  CHECK(constrainedPoints(coarsened.mesh) == constrainedPoints(refinedOnly.mesh));
+  CHECK(worstMeanRatio(coarsened.mesh) >= std::min(0.3, worstMeanRatio(refinedOnly.mesh)));
+
+  options.coarsen = true;
+  for (int threads : { 2, 3 })
+  {
+    options.numberOfThreads = threads;
+    AdaptationResult parallel;
+    CHECK(adaptMesh(input, options, parallel).ok());
+    CHECK(cgmesh_test::identicalResults(coarsened, parallel));
   }
 }
 
@@ -250,6 +336,7 @@ int main()
 {
   test_gradation_limits_neighbouring_sizes();
   test_refinement_to_a_graded_field();
+  test_coarsening_where_the_field_is_coarse();
   test_bad_size_fields_are_refused();
   test_refinement_regions_and_box();
   test_bad_selections_are_refused();

@@ -1,10 +1,13 @@
 #include "Improvement/QualityImprover.h"
 
+#include "Improvement/Improver.h"
+
 #include "Core/ConstrainedFaces.h"
 #include "Core/EdgeSplits.h"
 #include "Core/TetQuality.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <new>
 #include <unordered_map>
@@ -12,68 +15,8 @@
 
 namespace cgmesh
 {
-namespace
+namespace improvement
 {
-
-using Corners = std::array<int, 4>; // local vertex numbers
-
-// A change must beat the worst tet it replaces by more than rounding.
-bool improves(double after, double before)
-{
-  return after > before + 1e-12;
-}
-
-class Improver
-{
-public:
-  Improver(PartitionMesh& partition, const PartitionPoints& points);
-
-  void run(const ImprovementParameters& parameters, ImprovementStatistics& statistics);
-  void writeBack(std::vector<PointId>& movedPoints);
-
-private:
-  const double* at(int v) const { return this->Points.at(this->IdOf[v]); }
-  double quality(const Corners& t) const
-  {
-    return meanRatio(this->at(t[0]), this->at(t[1]), this->at(t[2]), this->at(t[3]));
-  }
-  double orientation(int a, int b, int c, int d) const
-  {
-    return signedVolume6(this->at(a), this->at(b), this->at(c), this->at(d));
-  }
-  int localVertex(PointId id);
-  void addTet(const Corners& corners, int region, CellId parent);
-  void killTet(int t);
-  std::vector<int> aliveTetsWith(const std::vector<int>& vertices) const;
-  CellId parentOf(const Corners& corners, const std::vector<int>& replaced) const;
-
-  bool removeEdge(int a, int b);
-  bool withinVolumeBound(const std::vector<Corners>& created, double largestReplaced) const;
-  double largestVolume(const std::vector<int>& tets) const;
-  bool orderedRing(int a, int b, const std::vector<int>& around, std::vector<int>& ring) const;
-  double triangleQuality(int p, int q, int r, int a, int b, double side) const;
-  double bestRingTriangulation(
-    int a, int b, const std::vector<int>& ring, std::vector<std::vector<int>>& split) const;
-  std::vector<Corners> ringTets(
-    int a, int b, const std::vector<int>& ring, const std::vector<std::vector<int>>& split) const;
-  double totalVolume(const std::vector<Corners>& tets) const;
-  bool swapFace(int t, int skip);
-  bool smoothVertex(int v);
-
-  PartitionMesh& Partition;
-  const PartitionPoints& Points;
-  std::vector<PointId> IdOf;
-  FlatHashMap<PointId, int, PointIdHash, NoPoint> LocalOf;
-  std::vector<Corners> Tets;
-  std::vector<int> Regions;
-  std::vector<CellId> Parents;
-  std::vector<double> Qualities; // mean ratio of each tet, kept current
-  std::vector<char> Alive;
-  std::vector<std::vector<int>> Incident; // tets (alive or not) at each vertex
-  std::vector<char> Fixed;
-  std::vector<char> Moved;
-  ImprovementParameters Parameters;
-};
 
 double Improver::totalVolume(const std::vector<Corners>& tets) const
 {
@@ -401,6 +344,16 @@ bool Improver::removeEdge(int a, int b)
   {
     return false; // guards against a folded re-triangulation
   }
+  for (const Corners& corners : created)
+  {
+    for (int v : corners)
+    {
+      if (this->longerThanSizeAt(v, { corners.begin(), corners.end() }))
+      {
+        return false; // a new edge refinement would split again
+      }
+    }
+  }
   std::vector<CellId> parents;
   for (const Corners& corners : created)
   {
@@ -472,9 +425,10 @@ bool Improver::swapFace(int t, int skip)
     return false;
   }
   const std::vector<int> replaced = { t, neighbour };
-  if (!this->withinVolumeBound(created, this->largestVolume(replaced)))
+  if (!this->withinVolumeBound(created, this->largestVolume(replaced)) ||
+    this->longerThanSizeAt(a, { b }))
   {
-    return false;
+    return false; // too large for Delaunay's bound, or an edge refinement would split again
   }
   std::vector<CellId> parents;
   for (const Corners& corners : created)
@@ -546,7 +500,8 @@ bool Improver::smoothVertex(int v)
     {
       moved.push_back(this->Tets[t]);
     }
-    if (after > 0 && improves(after, before) && this->withinVolumeBound(moved, largestBefore))
+    if (after > 0 && improves(after, before) && this->withinVolumeBound(moved, largestBefore) &&
+      !this->longerThanSizeAt(v, seen))
     {
       for (int t : star)
       {
@@ -565,6 +520,17 @@ void Improver::run(const ImprovementParameters& parameters, ImprovementStatistic
   this->Parameters = parameters;
   for (int pass = 0; pass < parameters.passes; ++pass)
   {
+    if (parameters.coarsen)
+    {
+      for (int v = 0; v < static_cast<int>(this->IdOf.size()); ++v)
+      {
+        statistics.edgeCollapses += this->collapseVertex(v);
+      }
+    }
+    if (!parameters.improve)
+    {
+      continue;
+    }
     const int tetsAtStart = static_cast<int>(this->Tets.size());
     std::unordered_set<std::uint64_t> triedEdges;
     for (int t = 0; t < tetsAtStart; ++t)
@@ -632,21 +598,21 @@ void Improver::writeBack(std::vector<PointId>& movedPoints)
   }
 }
 
-// The tets that share a vertex with a poor tet: every operation on a poor tet (its edges' rings,
-// its face neighbours, its vertices' stars) stays inside this neighbourhood. Template children of
+// The tets that share a vertex with a flagged (poor or short-edged) tet: every operation on a
+// flagged tet (its edges' rings, its face neighbours, its vertices' stars, the balls of a
+// collapsed edge's ends) stays inside this neighbourhood. Template children of
 // good parents are good, so on refined meshes this is about half the partition (52% on the
 // FinFET), and building the improver's structures for it alone halves their cost.
-std::vector<char> neighbourhoodOfPoorTets(
-  const PartitionMesh& partition, const std::vector<char>& poor)
+std::vector<char> neighbourhoodOf(const PartitionMesh& partition, const std::vector<char>& flagged)
 {
-  PointIdSet poorVertices;
+  PointIdSet flaggedVertices;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
-    if (poor[t])
+    if (flagged[t])
     {
       for (PointId p : partition.tets[t])
       {
-        poorVertices.emplace(p, 0);
+        flaggedVertices.emplace(p, 0);
       }
     }
   }
@@ -654,8 +620,8 @@ std::vector<char> neighbourhoodOfPoorTets(
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
-    selected[t] = std::any_of(
-      tet.begin(), tet.end(), [&poorVertices](PointId p) { return poorVertices.contains(p); });
+    selected[t] = std::any_of(tet.begin(), tet.end(),
+      [&flaggedVertices](PointId p) { return flaggedVertices.contains(p); });
   }
   return selected;
 }
@@ -679,7 +645,22 @@ void appendMesh(PartitionMesh& to, const PartitionMesh& from)
   to.regions.insert(to.regions.end(), from.regions.begin(), from.regions.end());
 }
 
-} // namespace
+// Whether an edge of `tet` is shorter than h / sqrt(2) (see Improver::isShort).
+bool hasShortEdge(const Tet& tet, const PartitionPoints& points)
+{
+  for (const auto& corners : TetEdgeCorners)
+  {
+    const PointId a = tet[corners[0]], b = tet[corners[1]];
+    const double h = 0.5 * (points.sizeAt(a) + points.sizeAt(b));
+    if (std::isfinite(h) && squaredDistance(points.at(a), points.at(b)) < 0.5 * h * h)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace improvement
 
 Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   const ImprovementParameters& parameters, ImprovementStatistics& statistics,
@@ -689,17 +670,22 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   {
     return Status::success();
   }
-  std::vector<char> poor(partition.tets.size());
-  std::int64_t poorTets = 0;
+  // The tets to work on: poor ones, and with coarsening those with an edge shorter than the size
+  // field asks.
+  std::vector<char> worked(partition.tets.size());
+  std::int64_t poorTets = 0, workedTets = 0;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
-    poor[t] = meanRatioBelow(points.at(tet[0]), points.at(tet[1]), points.at(tet[2]),
-      points.at(tet[3]), parameters.targetQuality);
-    poorTets += poor[t];
+    const bool poor = parameters.improve &&
+      meanRatioBelow(points.at(tet[0]), points.at(tet[1]), points.at(tet[2]), points.at(tet[3]),
+        parameters.targetQuality);
+    poorTets += poor;
+    worked[t] = poor || (parameters.coarsen && improvement::hasShortEdge(tet, points));
+    workedTets += worked[t];
   }
   statistics.poorTets += poorTets;
-  if (poorTets == 0)
+  if (workedTets == 0)
   {
     return Status::success(); // nothing to work on: skip building the local structures
   }
@@ -708,11 +694,11 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
     // The improver freezes the boundary of what it is given, so the neighbourhood's cut through
     // the partition stays as it is, and the tets outside it are untouched.
     PartitionMesh neighbourhood =
-      extractSelected(partition, neighbourhoodOfPoorTets(partition, poor));
-    Improver improver(neighbourhood, points);
+      improvement::extractSelected(partition, improvement::neighbourhoodOf(partition, worked));
+    improvement::Improver improver(neighbourhood, points);
     improver.run(parameters, statistics);
     improver.writeBack(movedPoints);
-    appendMesh(partition, neighbourhood);
+    improvement::appendMesh(partition, neighbourhood);
   }
   catch (const std::bad_alloc&)
   {

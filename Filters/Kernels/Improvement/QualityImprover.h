@@ -1,6 +1,7 @@
 // Local quality improvement of one partition after refinement: edge removal (a ring of 3 to 7
 // tets around an edge re-triangulated without it: 3->2, 4->4, 5->6, ...), face swaps (2->3) and
-// Laplacian smoothing with rollback.
+// Laplacian smoothing with rollback; and, with a size field, coarsening: edges shorter than
+// h / sqrt(2) collapsed at their free end (EdgeCollapse.cxx).
 //
 // Only what the partition owns alone is touched: vertices on its boundary (partition interfaces
 // and the domain boundary) and on material interfaces never move, and the edges and faces changed
@@ -14,6 +15,7 @@
 #include "Core/ProvisionalIds.h"
 #include "Core/Status.h"
 
+#include <limits>
 #include <vector>
 
 namespace cgmesh
@@ -21,7 +23,15 @@ namespace cgmesh
 
 struct ImprovementParameters
 {
-  int passes = 2; // sweeps of edge removal, face swaps and smoothing
+  int passes = 2;      // sweeps of edge removal, face swaps and smoothing (and of coarsening)
+  bool improve = true; // edge removal, face swaps and smoothing
+  // Collapse edges shorter than h / sqrt(2) (h from PartitionPoints::sizeAt), each at an end that
+  // is free to go: a vertex on no boundary, interface or material interface face. A collapse is
+  // kept when it inverts nothing, makes no edge longer than sqrt(2) h (which refinement would
+  // split again), and leaves the worst mean ratio of the affected tets at least
+  // min(collapseQualityFloor, their worst before).
+  bool coarsen = false;
+  double collapseQualityFloor = 0.3;
   // Only tets whose mean ratio is below this are worked on: good tets are left alone, which is
   // where most of the time would go.
   double targetQuality = 0.5;
@@ -35,6 +45,7 @@ struct ImprovementStatistics
   std::int64_t edgeRemovals = 0;
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
+  std::int64_t edgeCollapses = 0;
   std::int64_t poorTets = 0; // tets below the target when the partition was taken up
 };
 
@@ -44,10 +55,23 @@ struct PartitionPoints
 {
   std::vector<double>* global = nullptr;
   std::vector<double>* provisional = nullptr;
+  // The size field at the same points; null without one. With it, coarsening may run, and no
+  // collapse or smoothing move makes an edge longer than sqrt(2) h.
+  const std::vector<double>* globalSizes = nullptr;
+  const std::vector<double>* provisionalSizes = nullptr;
 
   double* at(PointId id) const
   {
     return const_cast<double*>(pointCoordinates(*global, *provisional, id));
+  }
+  // Infinite where there is no size: no edge there counts as short.
+  double sizeAt(PointId id) const
+  {
+    if (!globalSizes)
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    return isProvisional(id) ? (*provisionalSizes)[provisionalIndex(id)] : (*globalSizes)[id];
   }
 };
 

@@ -1,0 +1,92 @@
+// The mesh-editing core of quality improvement and coarsening (QualityImprover.h): one
+// partition's tets in local vertex numbers, with incidence, qualities and the vertices that may
+// not move. The operations live in QualityImprover.cxx (edge removal, face swaps, smoothing) and
+// EdgeCollapse.cxx (coarsening). Internal to the Improvement kernels.
+#ifndef cgmesh_Improver_h
+#define cgmesh_Improver_h
+
+#include "Core/EdgeSplits.h"
+#include "Core/Geometry.h"
+#include "Core/TetQuality.h"
+#include "Improvement/QualityImprover.h"
+
+#include <array>
+#include <vector>
+
+namespace cgmesh
+{
+namespace improvement
+{
+
+using Corners = std::array<int, 4>; // local vertex numbers
+
+// A change must beat the worst tet it replaces by more than rounding.
+inline bool improves(double after, double before)
+{
+  return after > before + 1e-12;
+}
+
+class Improver
+{
+public:
+  Improver(PartitionMesh& partition, const PartitionPoints& points);
+
+  void run(const ImprovementParameters& parameters, ImprovementStatistics& statistics);
+  void writeBack(std::vector<PointId>& movedPoints);
+
+private:
+  const double* at(int v) const { return this->Points.at(this->IdOf[v]); }
+  double quality(const Corners& t) const
+  {
+    return meanRatio(this->at(t[0]), this->at(t[1]), this->at(t[2]), this->at(t[3]));
+  }
+  double orientation(int a, int b, int c, int d) const
+  {
+    return signedVolume6(this->at(a), this->at(b), this->at(c), this->at(d));
+  }
+  int localVertex(PointId id);
+  void addTet(const Corners& corners, int region, CellId parent);
+  void killTet(int t);
+  std::vector<int> aliveTetsWith(const std::vector<int>& vertices) const;
+  CellId parentOf(const Corners& corners, const std::vector<int>& replaced) const;
+
+  bool removeEdge(int a, int b);
+  bool withinVolumeBound(const std::vector<Corners>& created, double largestReplaced) const;
+  double largestVolume(const std::vector<int>& tets) const;
+  bool orderedRing(int a, int b, const std::vector<int>& around, std::vector<int>& ring) const;
+  double triangleQuality(int p, int q, int r, int a, int b, double side) const;
+  double bestRingTriangulation(
+    int a, int b, const std::vector<int>& ring, std::vector<std::vector<int>>& split) const;
+  std::vector<Corners> ringTets(
+    int a, int b, const std::vector<int>& ring, const std::vector<std::vector<int>>& split) const;
+  double totalVolume(const std::vector<Corners>& tets) const;
+  bool swapFace(int t, int skip);
+  bool smoothVertex(int v);
+
+  // Coarsening (EdgeCollapse.cxx).
+  double sizeAt(int v) const { return this->Points.sizeAt(this->IdOf[v]); }
+  bool isShort(int a, int b) const;
+  // Whether an edge from v to one of `neighbours` is longer than sqrt(2) h (never, without sizes).
+  bool longerThanSizeAt(int v, const std::vector<int>& neighbours) const;
+  bool collapseVertex(int a);
+  bool linkConditionHolds(int a, int b) const;
+
+  PartitionMesh& Partition;
+  const PartitionPoints& Points;
+  std::vector<PointId> IdOf;
+  FlatHashMap<PointId, int, PointIdHash, NoPoint> LocalOf;
+  std::vector<Corners> Tets;
+  std::vector<int> Regions;
+  std::vector<CellId> Parents;
+  std::vector<double> Qualities; // mean ratio of each tet, kept current
+  std::vector<char> Alive;
+  std::vector<std::vector<int>> Incident; // tets (alive or not) at each vertex
+  std::vector<char> Fixed;
+  std::vector<char> Moved;
+  ImprovementParameters Parameters;
+};
+
+} // namespace improvement
+} // namespace cgmesh
+
+#endif
