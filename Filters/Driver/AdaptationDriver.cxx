@@ -192,10 +192,12 @@ void adoptMergedMesh(
     result.colorOfCell[t] = summary.colorOfPartition[result.partitionOfCell[t]];
     ++summary.cellsPerColor[result.colorOfCell[t]];
   }
-  if (merged.removedPoints > 0)
+  // Each collapse leaves exactly one vertex unused: those are coarsening, not the input's fault.
+  const PointId unused = merged.removedPoints - static_cast<PointId>(summary.edgeCollapses);
+  if (unused > 0)
   {
     summary.warnings.push_back({ WarningKind::UnusedPointsRemoved, -1,
-      "removed " + std::to_string(merged.removedPoints) + " points that no tetrahedron uses" });
+      "removed " + std::to_string(unused) + " points that no tetrahedron uses" });
   }
 }
 
