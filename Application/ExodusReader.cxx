@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cgmesh
@@ -113,44 +114,75 @@ Status readBlocks(int file, const ex_init_params& init, vtkUnstructuredGrid* gri
   return Status::success();
 }
 
+// One side or node set as the file holds it.
+struct ExodusSet
+{
+  std::int64_t id = 0;
+  std::string name;
+  std::vector<std::int64_t> entries; // element numbers (side sets) or node numbers, from 1
+  std::vector<std::int64_t> sides;   // side sets: the side of each element, from 1
+};
+
+// Every set of `type` (EX_SIDE_SET or EX_NODE_SET, called `what` in messages), in file order.
+Status readSets(int file, ex_entity_type type, std::int64_t count, const std::string& what,
+  std::vector<ExodusSet>& sets)
+{
+  const std::vector<std::int64_t> ids = entityIds(file, type, count);
+  const std::vector<std::string> names = entityNames(file, type, count);
+  if (static_cast<std::int64_t>(ids.size()) != count)
+    return Status::failure("its " + what + " ids cannot be read: " + exodusError("unknown error"));
+  for (std::size_t s = 0; s < ids.size(); ++s)
+  {
+    const std::string set = what + " " + std::to_string(ids[s]);
+    std::int64_t entries = 0, factors = 0;
+    if (ex_get_set_param(file, type, ids[s], &entries, &factors) < 0)
+      return Status::failure(set + " cannot be read: " + exodusError("unknown error"));
+    if (!fitsInt(ids[s]))
+      return Status::failure(set + ": the id is beyond the range of a Tag");
+    ExodusSet read;
+    read.id = ids[s];
+    read.name = names[s];
+    read.entries.resize(static_cast<std::size_t>(entries));
+    read.sides.resize(type == EX_SIDE_SET ? read.entries.size() : 0);
+    if (entries > 0 &&
+      ex_get_set(file, type, ids[s], read.entries.data(),
+        type == EX_SIDE_SET ? read.sides.data() : nullptr) < 0)
+      return Status::failure(set + " cannot be read: " + exodusError("unknown error"));
+    sets.push_back(std::move(read));
+  }
+  return Status::success();
+}
+
 // Every side set entry as a triangle: the element's side, in outward order. Elements are numbered
 // from 1 in block order, which is the order readBlocks inserted the tetrahedra in.
 Status readSideSets(int file, const ex_init_params& init, vtkUnstructuredGrid* grid,
   vtkIntArray* tags, MeshFileNames* names)
 {
-  const std::vector<std::int64_t> ids = entityIds(file, EX_SIDE_SET, init.num_side_sets);
-  const std::vector<std::string> setNames = entityNames(file, EX_SIDE_SET, init.num_side_sets);
-  if (static_cast<std::int64_t>(ids.size()) != init.num_side_sets)
-    return Status::failure("its side set ids cannot be read: " + exodusError("unknown error"));
+  std::vector<ExodusSet> sets;
+  const Status status = readSets(file, EX_SIDE_SET, init.num_side_sets, "side set", sets);
+  if (!status.ok())
+    return status;
   const vtkIdType tets = grid->GetNumberOfCells();
-  for (std::size_t s = 0; s < ids.size(); ++s)
+  for (const ExodusSet& set : sets)
   {
-    const std::string set = "side set " + std::to_string(ids[s]);
-    std::int64_t entries = 0, factors = 0;
-    if (ex_get_set_param(file, EX_SIDE_SET, ids[s], &entries, &factors) < 0)
-      return Status::failure(set + " cannot be read: " + exodusError("unknown error"));
-    if (!fitsInt(ids[s]))
-      return Status::failure(set + ": the id is beyond the range of a Tag");
-    std::vector<std::int64_t> elements(static_cast<std::size_t>(entries));
-    std::vector<std::int64_t> sides(static_cast<std::size_t>(entries));
-    if (entries > 0 && ex_get_set(file, EX_SIDE_SET, ids[s], elements.data(), sides.data()) < 0)
-      return Status::failure(set + " cannot be read: " + exodusError("unknown error"));
-    for (std::size_t k = 0; k < elements.size(); ++k)
+    for (std::size_t k = 0; k < set.entries.size(); ++k)
     {
-      if (elements[k] < 1 || elements[k] > tets || sides[k] < 1 || sides[k] > 4)
-        return Status::failure(set + " names side " + std::to_string(sides[k]) + " of element " +
-          std::to_string(elements[k]) + ", which does not exist (the mesh has " +
-          std::to_string(tets) + " tetrahedra of 4 sides)");
+      const std::int64_t element = set.entries[k], side = set.sides[k];
+      if (element < 1 || element > tets || side < 1 || side > 4)
+        return Status::failure("side set " + std::to_string(set.id) + " names side " +
+          std::to_string(side) + " of element " + std::to_string(element) +
+          ", which does not exist (the mesh has " + std::to_string(tets) +
+          " tetrahedra of 4 sides)");
       const vtkIdType* tet;
       vtkIdType count;
-      grid->GetCellPoints(static_cast<vtkIdType>(elements[k] - 1), count, tet);
-      const int* side = TetSideCorners[sides[k] - 1];
-      const vtkIdType corners[3] = { tet[side[0]], tet[side[1]], tet[side[2]] };
+      grid->GetCellPoints(static_cast<vtkIdType>(element - 1), count, tet);
+      const int* corner = TetSideCorners[side - 1];
+      const vtkIdType corners[3] = { tet[corner[0]], tet[corner[1]], tet[corner[2]] };
       grid->InsertNextCell(VTK_TRIANGLE, 3, corners);
-      tags->InsertNextValue(static_cast<int>(ids[s]));
+      tags->InsertNextValue(static_cast<int>(set.id));
     }
-    if (names && !setNames[s].empty())
-      names->physicalNames[{ 2, static_cast<int>(ids[s]) }] = setNames[s];
+    if (names && !set.name.empty())
+      names->physicalNames[{ 2, static_cast<int>(set.id) }] = set.name;
   }
   return Status::success();
 }
@@ -158,38 +190,30 @@ Status readSideSets(int file, const ex_init_params& init, vtkUnstructuredGrid* g
 Status readNodeSets(
   int file, const ex_init_params& init, vtkUnstructuredGrid* grid, MeshFileNames* names)
 {
-  const std::vector<std::int64_t> ids = entityIds(file, EX_NODE_SET, init.num_node_sets);
-  const std::vector<std::string> setNames = entityNames(file, EX_NODE_SET, init.num_node_sets);
-  if (static_cast<std::int64_t>(ids.size()) != init.num_node_sets)
-    return Status::failure("its node set ids cannot be read: " + exodusError("unknown error"));
-  for (std::size_t s = 0; s < ids.size(); ++s)
+  std::vector<ExodusSet> sets;
+  const Status status = readSets(file, EX_NODE_SET, init.num_node_sets, "node set", sets);
+  if (!status.ok())
+    return status;
+  for (const ExodusSet& set : sets)
   {
-    const std::string set = "node set " + std::to_string(ids[s]);
-    std::int64_t entries = 0, factors = 0;
-    if (ex_get_set_param(file, EX_NODE_SET, ids[s], &entries, &factors) < 0)
-      return Status::failure(set + " cannot be read: " + exodusError("unknown error"));
-    if (!fitsInt(ids[s]))
-      return Status::failure(set + ": the id is beyond the range of a Tag");
-    std::vector<std::int64_t> nodes(static_cast<std::size_t>(entries));
-    if (entries > 0 && ex_get_set(file, EX_NODE_SET, ids[s], nodes.data(), nullptr) < 0)
-      return Status::failure(set + " cannot be read: " + exodusError("unknown error"));
-    std::string arrayName = setNames[s];
+    std::string arrayName = set.name;
     if (arrayName.empty() || grid->GetPointData()->GetAbstractArray(arrayName.c_str()))
-      arrayName = "NodeSet" + std::to_string(ids[s]);
+      arrayName = "NodeSet" + std::to_string(set.id);
     vtkNew<vtkIntArray> members;
     members->SetName(arrayName.c_str());
     members->SetNumberOfValues(grid->GetNumberOfPoints());
     members->FillValue(0);
-    for (const std::int64_t node : nodes)
+    for (const std::int64_t node : set.entries)
     {
       if (node < 1 || node > init.num_nodes)
-        return Status::failure(set + " names node " + std::to_string(node) +
-          ", which does not exist (the mesh has " + std::to_string(init.num_nodes) + ")");
+        return Status::failure("node set " + std::to_string(set.id) + " names node " +
+          std::to_string(node) + ", which does not exist (the mesh has " +
+          std::to_string(init.num_nodes) + ")");
       members->SetValue(static_cast<vtkIdType>(node - 1), 1);
     }
     grid->GetPointData()->AddArray(members);
     if (names)
-      names->nodeSets[arrayName] = static_cast<int>(ids[s]);
+      names->nodeSets[arrayName] = static_cast<int>(set.id);
   }
   return Status::success();
 }

@@ -175,7 +175,7 @@ void test_coarsening_where_the_field_is_coarse()
   options.numberOfPartitions = 16;
   options.numberOfThreads = 1;
   options.sizeGradation = 1e6; // the step as given
-  CHECK(options.coarsen); // on by default
+  CHECK(options.coarsen);      // on by default
   AdaptationResult coarsened, refinedOnly;
   CHECK(adaptMesh(input, options, coarsened).ok());
   options.coarsen = false;

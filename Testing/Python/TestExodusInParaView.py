@@ -7,7 +7,6 @@ numbered on from the largest."""
 import argparse
 import os
 import shutil
-import subprocess
 import sys
 
 import numpy
@@ -17,6 +16,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import TestTaggedTriangles as tagged  # noqa: E402
+from TestCommandLine import run  # noqa: E402
 
 check = tagged.check
 TETRA, TRIANGLE = 10, 5
@@ -54,8 +54,7 @@ def main():
     os.makedirs(options.scratch)
     source, _ = tagged.make_input(options.gmsh, options.scratch)
     exo = os.path.join(options.scratch, "two-volumes.exo")
-    result = subprocess.run([options.cgmesh, "refine", source, exo, "--partitions", "8"],
-                            capture_output=True, text=True)
+    result = run(options.cgmesh, "refine", source, exo, "--partitions", "8")
     check(result.returncode == 0, "cgmesh refine to .exo: " + result.stderr)
     if tagged.FAILURES:
         return 1

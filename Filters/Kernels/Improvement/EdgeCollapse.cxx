@@ -5,6 +5,8 @@
 // interfaces keep their triangles exactly. Vertices frozen here are reached by the box sweeps.
 #include "Improvement/Improver.h"
 
+#include "Refinement/SizeField.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -50,16 +52,33 @@ bool holds(const Corners& corners, int v)
 
 bool Improver::isShort(int a, int b) const
 {
-  const double h = 0.5 * (this->sizeAt(a) + this->sizeAt(b));
-  return std::isfinite(h) && squaredDistance(this->at(a), this->at(b)) < 0.5 * h * h;
+  return shorterThanSize(
+    squaredDistance(this->at(a), this->at(b)), this->sizeAt(a), this->sizeAt(b));
 }
 
-bool Improver::longerThanSizeAt(int v, const std::vector<int>& neighbours) const
+bool Improver::longerThanSizeAt(int v, const int* neighbours, std::size_t count) const
 {
-  for (int w : neighbours)
+  if (!this->Points.globalSizes)
   {
-    const double h = 0.5 * (this->sizeAt(v) + this->sizeAt(w));
-    if (w != v && std::isfinite(h) && squaredDistance(this->at(v), this->at(w)) > 2.0 * h * h)
+    return false;
+  }
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const int w = neighbours[k];
+    if (w != v &&
+      longerThanSize(squaredDistance(this->at(v), this->at(w)), this->sizeAt(v), this->sizeAt(w)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool Improver::hasEdgeLongerThanSize(const Corners& tet) const
+{
+  for (const auto& corners : TetEdgeCorners)
+  {
+    if (this->longerThanSizeAt(tet[corners[0]], &tet[corners[1]], 1))
     {
       return true;
     }
@@ -187,7 +206,7 @@ bool Improver::collapseVertex(int a)
       valid = this->orientation(corners[0], corners[1], corners[2], corners[3]) > 0 &&
         this->quality(corners) >= floor;
       // No edge longer than sqrt(2) h, which refinement would split again.
-      valid = valid && !this->longerThanSizeAt(b, { corners.begin(), corners.end() });
+      valid = valid && !this->longerThanSizeAt(b, corners.data(), corners.size());
       created.push_back(corners);
       sources.push_back(ball[i]);
     }

@@ -63,11 +63,13 @@ private:
   bool swapFace(int t, int skip);
   bool smoothVertex(int v);
 
-  // Coarsening (EdgeCollapse.cxx).
+  // The size field (EdgeCollapse.cxx), and coarsening.
   double sizeAt(int v) const { return this->Points.sizeAt(this->IdOf[v]); }
   bool isShort(int a, int b) const;
-  // Whether an edge from v to one of `neighbours` is longer than sqrt(2) h (never, without sizes).
-  bool longerThanSizeAt(int v, const std::vector<int>& neighbours) const;
+  // Whether an edge from v to one of the `count` vertices at `neighbours` is longer than
+  // sqrt(2) h (never without a size field: then nothing is looked at).
+  bool longerThanSizeAt(int v, const int* neighbours, std::size_t count) const;
+  bool hasEdgeLongerThanSize(const Corners& tet) const;
   bool collapseVertex(int a);
   bool linkConditionHolds(int a, int b) const;
 
@@ -80,7 +82,7 @@ private:
   std::vector<CellId> Parents;
   std::vector<double> Qualities; // mean ratio of each tet, kept current
   std::vector<char> Alive;
-  std::vector<std::vector<int>> Incident; // tets (alive or not) at each vertex
+  std::vector<std::vector<int>> Incident; // alive tets at each vertex (killTet removes)
   std::vector<char> Fixed;
   std::vector<char> Moved;
   ImprovementParameters Parameters;

@@ -5,6 +5,7 @@
 #include "Core/ConstrainedFaces.h"
 #include "Core/EdgeSplits.h"
 #include "Core/TetQuality.h"
+#include "Refinement/SizeField.h"
 
 #include <algorithm>
 #include <cmath>
@@ -346,12 +347,9 @@ bool Improver::removeEdge(int a, int b)
   }
   for (const Corners& corners : created)
   {
-    for (int v : corners)
+    if (this->hasEdgeLongerThanSize(corners))
     {
-      if (this->longerThanSizeAt(v, { corners.begin(), corners.end() }))
-      {
-        return false; // a new edge refinement would split again
-      }
+      return false; // a new edge refinement would split again
     }
   }
   std::vector<CellId> parents;
@@ -426,7 +424,7 @@ bool Improver::swapFace(int t, int skip)
   }
   const std::vector<int> replaced = { t, neighbour };
   if (!this->withinVolumeBound(created, this->largestVolume(replaced)) ||
-    this->longerThanSizeAt(a, { b }))
+    this->longerThanSizeAt(a, &b, 1))
   {
     return false; // too large for Delaunay's bound, or an edge refinement would split again
   }
@@ -501,7 +499,7 @@ bool Improver::smoothVertex(int v)
       moved.push_back(this->Tets[t]);
     }
     if (after > 0 && improves(after, before) && this->withinVolumeBound(moved, largestBefore) &&
-      !this->longerThanSizeAt(v, seen))
+      !this->longerThanSizeAt(v, seen.data(), seen.size()))
     {
       for (int t : star)
       {
@@ -651,8 +649,8 @@ bool hasShortEdge(const Tet& tet, const PartitionPoints& points)
   for (const auto& corners : TetEdgeCorners)
   {
     const PointId a = tet[corners[0]], b = tet[corners[1]];
-    const double h = 0.5 * (points.sizeAt(a) + points.sizeAt(b));
-    if (std::isfinite(h) && squaredDistance(points.at(a), points.at(b)) < 0.5 * h * h)
+    if (shorterThanSize(
+          squaredDistance(points.at(a), points.at(b)), points.sizeAt(a), points.sizeAt(b)))
     {
       return true;
     }

@@ -9,6 +9,7 @@
 #include "Core/TetMesh.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,14 @@ inline bool longerThanSize(double lengthSquared, double ha, double hb)
 {
   const double h = 0.5 * (ha + hb);
   return lengthSquared > 2.0 * h * h;
+}
+
+// Whether it is too short: below h / sqrt(2), what coarsening collapses. Never where a size is
+// infinite (a point outside a refinement selection).
+inline bool shorterThanSize(double lengthSquared, double ha, double hb)
+{
+  const double h = 0.5 * (ha + hb);
+  return std::isfinite(h) && lengthSquared < 0.5 * h * h;
 }
 
 // Checks one size per point, each positive and finite where a tet uses the point.
