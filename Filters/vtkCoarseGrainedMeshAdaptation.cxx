@@ -1,6 +1,7 @@
 #include "vtkCoarseGrainedMeshAdaptation.h"
 
 #include "cgmeshAdaptedGrid.h"
+#include "cgmeshDistributed.h"
 #include "cgmeshMaterialLabels.h"
 #include "cgmeshPointData.h"
 #include "cgmeshTetQuality.h"
@@ -13,6 +14,7 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -21,6 +23,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -28,6 +31,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -426,57 +430,228 @@ bool vtkCoarseGrainedMeshAdaptation::CheckInput(vtkUnstructuredGrid* input)
 }
 
 //------------------------------------------------------------------------------
+struct vtkCoarseGrainedMeshAdaptation::PieceRun
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input; // this process's cells, triangles included
+  vtkSmartPointer<vtkUnstructuredGrid> tets;  // the input without its triangles
+  cgmesh::TriangleCells triangles;
+  bool withTriangles = false;
+  cgmesh::TetMesh mesh;
+  cgmesh::AdaptationResult result;
+};
+
+//------------------------------------------------------------------------------
+bool vtkCoarseGrainedMeshAdaptation::SeparateTriangles(PieceRun& run)
+{
+  if (!this->CheckInput(run.input))
+  {
+    return false;
+  }
+  // Triangles tag faces of the tets: the tets are adapted, the triangles follow their faces.
+  run.tets = run.input;
+  run.withTriangles = cgmesh::hasTriangles(run.input);
+  if (run.withTriangles)
+  {
+    run.tets = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    cgmesh::separateTriangles(run.input, run.tets, run.triangles);
+    if (run.tets->GetNumberOfCells() == 0)
+    {
+      vtkErrorMacro(<< "The input holds triangles but no tetrahedra: there is no volume mesh to "
+                       "refine.");
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCoarseGrainedMeshAdaptation::ConvertPiece(
+  PieceRun& run, const std::vector<std::string>& materialLabels)
+{
+  const std::string regionArrayName = this->ResolveRegionArrayName(run.input);
+  cgmesh::Status status = cgmesh::convertToTetMesh(
+    run.tets, regionArrayName, run.mesh, this->ResolveSizeArrayName(run.input));
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< "Cannot read the input: " << status.message() << ".");
+    return false;
+  }
+  // Without a region array, the input's integer cell arrays guard the material interfaces.
+  if (regionArrayName.empty() && !materialLabels.empty())
+  {
+    cgmesh::combineMaterialLabels(run.tets, materialLabels, run.mesh);
+  }
+  if (run.withTriangles && !(status = cgmesh::checkTriangleCells(run.mesh, run.triangles)).ok())
+  {
+    vtkErrorMacro(<< "Cannot refine the input's triangles: " << status.message() << ".");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCoarseGrainedMeshAdaptation::AdaptPiece(
+  PieceRun& run, const cgmesh::AdaptationOptions& options, vtkUnstructuredGrid* output)
+{
+  const cgmesh::Status status = cgmesh::adaptMesh(run.mesh, options, run.result);
+  this->Internals->LastSummary = run.result.summary;
+  this->Internals->LastQualitySeconds = 0;
+  this->Internals->HasRun = true;
+  reportWarnings(this, run.result.summary);
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< "Mesh adaptation failed: " << status.message());
+    return false;
+  }
+  if (run.result.summary.aborted)
+  {
+    return true;
+  }
+
+  cgmesh::AdaptedGridInput adapted;
+  adapted.grid = run.input;
+  adapted.mesh = &run.mesh;
+  adapted.triangles = run.withTriangles ? &run.triangles : nullptr;
+  adapted.interpolatedPointArrays = this->Internals->Parameters.interpolatedPointArrays;
+  adapted.labelPointArrays = this->Internals->Parameters.labelPointArrays;
+  cgmesh::fillAdaptedGrid(adapted, run.result, output);
+  this->UpdateProgress(0.9);
+  const cgmesh::Stopwatch qualityStopwatch;
+  const cgmesh::Status quality =
+    cgmesh::addTetQualityArrays(output, run.result.summary.plan.threads);
+  if (!quality.ok())
+  {
+    output->Initialize();
+    vtkErrorMacro(<< "Quality arrays failed: " << quality.message());
+    return false;
+  }
+  this->Internals->LastQualitySeconds = qualityStopwatch.seconds();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkCoarseGrainedMeshAdaptation::NumberAcrossProcesses(const cgmesh::ProcessGroup& group,
+  const PieceRun& run, int ghostLevels, vtkUnstructuredGrid* output)
+{
+  const cgmesh::Stopwatch stopwatch;
+  // Input points keep the ids their input carried; the others are numbered across processes.
+  std::vector<long long> keptIds;
+  vtkDataArray* inputIds = run.input->GetPointData()->GetGlobalIds();
+  const auto& inputPoints = run.result.provenance.inputPoints;
+  if (inputIds && inputIds->GetNumberOfComponents() == 1 &&
+    static_cast<cgmesh::PointId>(inputPoints.size()) == run.result.mesh.numberOfPoints())
+  {
+    keptIds.resize(inputPoints.size());
+    for (std::size_t p = 0; p < inputPoints.size(); ++p)
+    {
+      keptIds[p] = inputPoints[p] >= 0
+        ? static_cast<long long>(inputIds->GetComponent(inputPoints[p], 0))
+        : -1;
+    }
+  }
+  const cgmesh::GlobalNumbering numbering =
+    cgmesh::numberAcrossProcesses(group, run.result.mesh, keptIds, output->GetNumberOfCells());
+
+  vtkSmartPointer<vtkDataArray> pointIds = output->GetPointData()->GetGlobalIds();
+  if (!pointIds)
+  {
+    pointIds = vtkSmartPointer<vtkIdTypeArray>::New();
+    pointIds->SetName("GlobalPointIds");
+  }
+  pointIds->SetNumberOfComponents(1);
+  pointIds->SetNumberOfTuples(output->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < output->GetNumberOfPoints(); ++p)
+  {
+    pointIds->SetComponent(p, 0, static_cast<double>(numbering.pointIds[p]));
+  }
+  output->GetPointData()->SetGlobalIds(pointIds);
+  vtkNew<vtkIdTypeArray> cellIds;
+  cellIds->SetName("GlobalCellIds");
+  cellIds->SetNumberOfTuples(output->GetNumberOfCells());
+  for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+  {
+    cellIds->SetValue(c, numbering.firstCellId + c);
+  }
+  output->GetCellData()->SetGlobalIds(cellIds);
+
+  if (ghostLevels > 0)
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> withGhosts =
+      cgmesh::addGhostCells(group, output, ghostLevels);
+    if (withGhosts != output)
+    {
+      output->ShallowCopy(withGhosts);
+    }
+  }
+  vtkFieldData* fieldData = output->GetFieldData();
+  addFieldValue(fieldData, "NumberOfProcesses", group.size());
+  addFieldValue(fieldData, "ProcessSharedPoints", static_cast<double>(numbering.sharedPoints));
+  addFieldValue(fieldData, "ProcessExchangeBytes", static_cast<double>(numbering.exchangedBytes));
+  addFieldValue(fieldData, "ProcessNumberingSeconds", stopwatch.seconds());
+}
+
+//------------------------------------------------------------------------------
 int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   const cgmesh::Stopwatch stopwatch;
   this->Internals->HasRun = false;
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  this->Internals->MaterialLabelArrays.clear();
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   output->Initialize();
-  if (!input || input->GetNumberOfCells() == 0)
+  PieceRun run;
+  run.input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  if (!run.input)
+  {
+    run.input = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  }
+
+  // Under ParaView's MPI every process holds a piece of the mesh. Each refines its own; the steps
+  // that involve the others are collective, and every process reaches each of them, so that one
+  // process's error stops them all there.
+  const std::unique_ptr<cgmesh::ProcessGroup> group = cgmesh::ProcessGroup::ofGlobalController();
+  if (group)
+  {
+    std::string note;
+    run.input = cgmesh::prepareDistributedPiece(*group, run.input, note);
+    if (!note.empty() && group->rank() == 0)
+    {
+      vtkWarningMacro(<< note);
+    }
+  }
+  const bool hasPiece = run.input->GetNumberOfCells() > 0;
+  if ((group ? group->sum(hasPiece ? 1LL : 0LL) : hasPiece ? 1 : 0) == 0)
   {
     vtkWarningMacro(<< "The input has no cells; the output is empty.");
     return 1;
   }
-  if (!this->CheckInput(input))
+  // Whether this step passed: in one process `ok`; across processes, whether it passed on all.
+  const auto passed = [&](bool ok, const char* step)
   {
-    return 0;
-  }
-
-  // Triangles tag faces of the tets: the tets are adapted, the triangles follow their faces.
-  vtkSmartPointer<vtkUnstructuredGrid> tets = input;
-  cgmesh::TriangleCells triangles;
-  const bool withTriangles = cgmesh::hasTriangles(input);
-  if (withTriangles)
-  {
-    tets = vtkSmartPointer<vtkUnstructuredGrid>::New();
-    cgmesh::separateTriangles(input, tets, triangles);
-    if (tets->GetNumberOfCells() == 0)
+    if (!group)
     {
-      vtkErrorMacro(<< "The input holds triangles but no tetrahedra: there is no volume mesh to "
-                       "refine.");
-      return 0;
+      return ok;
     }
-  }
+    const int failed = group->firstFailure(ok);
+    if (failed >= 0 && ok)
+    {
+      vtkErrorMacro(<< "Mesh adaptation stopped on all " << group->size() << " processes: process "
+                    << failed << " failed while " << step << " (its error says why).");
+    }
+    return failed < 0;
+  };
 
-  cgmesh::TetMesh inputMesh;
-  const std::string regionArrayName = this->ResolveRegionArrayName(input);
-  cgmesh::Status status =
-    cgmesh::convertToTetMesh(tets, regionArrayName, inputMesh, this->ResolveSizeArrayName(input));
-  if (!status.ok())
+  if (!passed(!hasPiece || this->SeparateTriangles(run), "checking its piece of the input"))
   {
-    vtkErrorMacro(<< "Cannot read the input: " << status.message() << ".");
     return 0;
   }
-  // Without a region array, the input's integer cell arrays guard the material interfaces.
-  this->Internals->MaterialLabelArrays.clear();
-  if (regionArrayName.empty())
+  std::vector<std::string> labels;
+  if (this->ResolveRegionArrayName(run.input).empty())
   {
-    const std::vector<std::string> labels = cgmesh::findMaterialLabelArrays(tets);
-    if (!labels.empty())
+    labels = hasPiece ? cgmesh::findMaterialLabelArrays(run.tets) : labels;
+    if (group)
     {
-      cgmesh::combineMaterialLabels(tets, labels, inputMesh);
+      labels = cgmesh::unionAcrossProcesses(*group, labels);
     }
     for (const std::string& name : labels)
     {
@@ -484,51 +659,49 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
         (this->Internals->MaterialLabelArrays.empty() ? "" : ",") + name;
     }
   }
-  if (withTriangles && !(status = cgmesh::checkTriangleCells(inputMesh, triangles)).ok())
+  if (!passed(!hasPiece || this->ConvertPiece(run, labels), "reading its piece of the input"))
   {
-    vtkErrorMacro(<< "Cannot refine the input's triangles: " << status.message() << ".");
     return 0;
   }
 
-  cgmesh::AdaptationResult result;
-  status = cgmesh::adaptMesh(
-    inputMesh, makeOptions(this, this->Internals->Parameters, input, withTriangles), result);
-  this->Internals->LastSummary = result.summary;
-  this->Internals->LastQualitySeconds = 0;
-  this->Internals->HasRun = true;
-  reportWarnings(this, result.summary);
-  if (!status.ok())
+  cgmesh::AdaptationOptions options =
+    makeOptions(this, this->Internals->Parameters, run.input, run.withTriangles);
+  if (group)
   {
-    vtkErrorMacro(<< "Mesh adaptation failed: " << status.message());
+    const std::string unsupported =
+      cgmesh::unsupportedAcrossProcesses(options, !this->ResolveSizeArrayName(run.input).empty());
+    if (!unsupported.empty())
+    {
+      vtkErrorMacro(<< unsupported << "."); // the same on every process: no exchange needed
+      return 0;
+    }
+    cgmesh::resolveDistributedOptions(*group, run.mesh, options);
+  }
+  if (!passed(!hasPiece || this->AdaptPiece(run, options, output), "refining its piece"))
+  {
+    output->Initialize();
     return 0;
   }
-  if (result.summary.aborted)
+  const bool aborted = hasPiece && run.result.summary.aborted;
+  if (group ? group->sum(aborted ? 1LL : 0LL) > 0 : aborted)
   {
+    output->Initialize();
     vtkWarningMacro(<< "Mesh adaptation was aborted; the output is empty.");
     return 1;
   }
 
-  cgmesh::AdaptedGridInput adapted;
-  adapted.grid = input;
-  adapted.mesh = &inputMesh;
-  adapted.triangles = withTriangles ? &triangles : nullptr;
-  adapted.interpolatedPointArrays = this->Internals->Parameters.interpolatedPointArrays;
-  adapted.labelPointArrays = this->Internals->Parameters.labelPointArrays;
-  cgmesh::fillAdaptedGrid(adapted, result, output);
-  this->UpdateProgress(0.9);
-  const cgmesh::Stopwatch qualityStopwatch;
-  status = cgmesh::addTetQualityArrays(output, result.summary.plan.threads);
-  const double qualitySeconds = qualityStopwatch.seconds();
-  if (!status.ok())
+  if (group)
   {
-    output->Initialize();
-    vtkErrorMacro(<< "Quality arrays failed: " << status.message());
-    return 0;
+    const int ghostLevels = outputVector->GetInformationObject(0)->Get(
+      vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS());
+    this->NumberAcrossProcesses(*group, run, ghostLevels, output);
   }
-  this->Internals->LastQualitySeconds = qualitySeconds;
-  this->Internals->LastTotalSeconds = stopwatch.seconds();
-  addFieldData(result.summary, this, qualitySeconds, this->Internals->LastTotalSeconds,
-    output->GetFieldData());
+  if (hasPiece)
+  {
+    this->Internals->LastTotalSeconds = stopwatch.seconds();
+    addFieldData(run.result.summary, this, this->Internals->LastQualitySeconds,
+      this->Internals->LastTotalSeconds, output->GetFieldData());
+  }
   this->UpdateProgress(1.0);
   return 1;
 }

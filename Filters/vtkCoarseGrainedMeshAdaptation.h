@@ -54,11 +54,14 @@
 #include "vtkUnstructuredGridAlgorithm.h"
 
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkUnstructuredGrid;
 namespace cgmesh
 {
+struct AdaptationOptions;
 struct AdaptationSummary;
+class ProcessGroup;
 }
 
 // A parameter's typed setter and getter, stored through Set/GetParameterValue.
@@ -325,6 +328,17 @@ protected:
   // Reports an error and returns false unless every input cell is a linear tetrahedron or a
   // triangle, and PartitionByRegion has a region array to cut along.
   bool CheckInput(vtkUnstructuredGrid* input);
+
+  // The stages of one run on this process's piece (the whole input in one process); each reports
+  // its own error and returns false on failure.
+  struct PieceRun;
+  bool SeparateTriangles(PieceRun& run);
+  bool ConvertPiece(PieceRun& run, const std::vector<std::string>& materialLabels);
+  bool AdaptPiece(
+    PieceRun& run, const cgmesh::AdaptationOptions& options, vtkUnstructuredGrid* output);
+  // Across processes: global point and cell ids, and ghost cells when the pipeline asks for them.
+  void NumberAcrossProcesses(const cgmesh::ProcessGroup& group, const PieceRun& run,
+    int ghostLevels, vtkUnstructuredGrid* output);
 
   // The parameters' values, kept as the driver's options.
   class vtkInternals;

@@ -135,6 +135,7 @@ ColorLoopSetup refinementSetup(
   setup.threads = plan.threads;
   setup.squaredThreshold = plan.edgeLengthThreshold * plan.edgeLengthThreshold;
   setup.templates = &templateTable();
+  setup.orderCornersByCoordinates = options.orderCornersByCoordinates;
   setup.method = options.method;
   setup.delaunay.maximumVolume = plan.volumeBound;
   setup.delaunay.radiusEdgeRatio = options.radiusEdgeRatio;

@@ -72,6 +72,9 @@ struct AdaptationOptions
   // Partitions whose TetGen call is made to fail, to exercise the fallback.
   std::vector<int> simulateTetGenFailureIn;
 
+  // Set when the mesh is one piece of a mesh spread over processes (the filter under MPI): face
+  // diagonals then follow coordinates, which the processes sharing a face agree on, not ids.
+  bool orderCornersByCoordinates = false;
   // Whether the result needs point provenance (the weights that interpolate point data). Without
   // point data there is nothing to interpolate, and the merge skips locating moved points in the
   // input and expanding every new point's recipe.

@@ -341,6 +341,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     context.refinement.squaredThreshold = setup.squaredThreshold;
     context.refinement.sizes = state.sizes.empty() ? nullptr : &state.sizes;
     context.refinement.templates = setup.templates;
+    context.refinement.orderCornersByCoordinates = setup.orderCornersByCoordinates;
     Status forecast = checkForecastSize(setup, context.refinement, state);
     if (!forecast.ok())
     {

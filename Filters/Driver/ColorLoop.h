@@ -43,6 +43,7 @@ struct ColorLoopSetup
   int threads = 1;
   double squaredThreshold = 0; // template edge threshold, or interface length for Delaunay
   const TemplateTable* templates = nullptr;
+  bool orderCornersByCoordinates = false; // see RefinementContext
   RefinementMethod method = RefinementMethod::Template;
   DelaunayParameters delaunay;
   PartitionTetGenRunner runTetGen;       // Delaunay: how partitions call TetGen

@@ -111,15 +111,29 @@ private:
   EdgeMidpointMap Created;
 };
 
-std::array<int, 4> cornerRanks(const Tet& tet)
+// The rank of each corner among the four in the order that decides face diagonals: the global
+// vertex order (vertexRank()) or, across processes, the coordinates' lexicographic order.
+template <typename CoordinatesOf>
+std::array<int, 4> cornerRanks(
+  const Tet& tet, const RefinementContext& context, const CoordinatesOf& coordinatesOf)
 {
+  auto precedes = [&](PointId a, PointId b)
+  {
+    if (!context.orderCornersByCoordinates)
+    {
+      return vertexRank(a) < vertexRank(b);
+    }
+    const double* pa = coordinatesOf(a);
+    const double* pb = coordinatesOf(b);
+    return std::lexicographical_compare(pa, pa + 3, pb, pb + 3);
+  };
   std::array<int, 4> ranks;
   for (int i = 0; i < 4; ++i)
   {
     ranks[i] = 0;
     for (int j = 0; j < 4; ++j)
     {
-      ranks[i] += vertexRank(tet[j]) < vertexRank(tet[i]);
+      ranks[i] += precedes(tet[j], tet[i]);
     }
   }
   return ranks;
@@ -191,9 +205,14 @@ std::int64_t predictTemplateTetCount(
       splitMask |= isLong << e;
     }
     count += splitMask == 0 ? 1
-      : splitMask == 63     ? 8
-                            : static_cast<std::int64_t>(
-                            context.templates->partialSplit(splitMask, cornerRanks(tet)).size());
+      : splitMask == 63
+      ? 8
+      : static_cast<std::int64_t>(
+          context.templates
+            ->partialSplit(splitMask,
+              cornerRanks(
+                tet, context, [&coordinates](PointId id) { return coordinates.data() + 3 * id; }))
+            .size());
   }
   return count;
 }
@@ -250,7 +269,9 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       }
       const std::vector<LocalTet>& children = splitMask == 63
         ? context.templates->fullSplit(shortestDiagonal(session, vertices))
-        : context.templates->partialSplit(splitMask, cornerRanks(tet));
+        : context.templates->partialSplit(splitMask,
+            cornerRanks(
+              tet, context, [&session](PointId id) { return session.coordinatesOf(id); }));
       for (const LocalTet& child : children)
       {
         emit({ vertices[child[0]], vertices[child[1]], vertices[child[2]], vertices[child[3]] });

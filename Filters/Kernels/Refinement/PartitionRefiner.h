@@ -27,6 +27,10 @@ struct RefinementContext
   // instead of the threshold.
   const std::vector<double>* sizes = nullptr;
   const TemplateTable* templates = nullptr;
+  // Face diagonals follow the vertices' coordinates (lexicographic x, y, z) instead of their ids.
+  // Pieces of one mesh refined by separate processes see a shared face with their own ids but
+  // with bit-identical coordinates, so only this order cuts it alike on both sides.
+  bool orderCornersByCoordinates = false;
 };
 
 using EdgeSet = std::unordered_set<EdgeKey, EdgeKeyHash>;
