@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <cstring>
 #include <numeric>
+#include <sched.h>
+#include <unistd.h>
 #include <unordered_map>
 
 namespace cgmesh
@@ -127,10 +129,40 @@ vtkSmartPointer<vtkUnstructuredGrid> prepareDistributedPiece(
   return spread;
 }
 
+namespace
+{
+
+int processesOnThisHost(const ProcessGroup& group)
+{
+  char name[256] = {};
+  gethostname(name, sizeof(name) - 1);
+  const std::vector<char> mine(name, name + std::strlen(name) + 1);
+  std::vector<long long> offsets;
+  const std::vector<char> all = group.gather(mine, offsets);
+  int count = 0;
+  for (int r = 0; r < group.size(); ++r)
+  {
+    count +=
+      std::equal(mine.begin(), mine.end(), all.begin() + offsets[r], all.begin() + offsets[r + 1]);
+  }
+  return std::max(1, count);
+}
+
+} // namespace
+
 void resolveDistributedOptions(
   const ProcessGroup& group, const TetMesh& piece, AdaptationOptions& options)
 {
   options.orderCornersByCoordinates = true;
+  // "Every core" means this process's share of the cores it may run on: processes on one host
+  // would otherwise each start a thread per core.
+  const int local = processesOnThisHost(group);
+  if (options.numberOfThreads == 0)
+  {
+    cpu_set_t cores;
+    const int available = sched_getaffinity(0, sizeof(cores), &cores) == 0 ? CPU_COUNT(&cores) : 1;
+    options.numberOfThreads = std::max(1, available / local);
+  }
   const double tets = group.sum(static_cast<double>(piece.numberOfTets()));
   if (options.method == RefinementMethod::Delaunay)
   {

@@ -30,8 +30,9 @@ vtkSmartPointer<vtkUnstructuredGrid> prepareDistributedPiece(
   const ProcessGroup& group, vtkUnstructuredGrid* input, std::string& note);
 
 // Turns a threshold or volume bound relative to the mesh (EdgeLengthFactor, VolumeFactor) into
-// the absolute one of the whole mesh, so that every piece splits a shared edge alike, and makes
-// face diagonals follow coordinates. Collective.
+// the absolute one of the whole mesh, so that every piece splits a shared edge alike, makes face
+// diagonals follow coordinates, and resolves NumberOfThreads 0 to the cores this process may use
+// divided by the processes on its host. Collective.
 void resolveDistributedOptions(
   const ProcessGroup& group, const TetMesh& piece, AdaptationOptions& options);
 
