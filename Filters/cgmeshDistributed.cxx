@@ -54,20 +54,44 @@ struct CoordinateKeyHash
 };
 
 // The points on faces of one tet only, in increasing order: the only ones another piece can hold.
+// A face of one tet is a face of one tet within any run of consecutive tets that holds it, so the
+// runs' own boundaries (small hash tables that stay in cache; the tets come partition by partition,
+// so a run is compact and its boundary a small share of its faces) are the candidates, and one sort
+// of the candidates keeps those no other run holds. One table over all faces of a 3.4 M-tet piece
+// took 9 s.
 std::vector<PointId> boundaryPoints(const TetMesh& piece)
 {
-  std::vector<char> onBoundary(piece.numberOfPoints(), 0);
-  forEachDistinctFace(piece.tets.empty() ? nullptr : piece.tets[0].data(), piece.tets.size(),
-    [&](const Face& face, std::size_t, std::size_t, std::size_t count)
-    {
-      if (count == 1)
+  constexpr std::size_t RunLength = 8192;
+  std::vector<Face> candidates;
+  for (std::size_t first = 0; first < piece.tets.size(); first += RunLength)
+  {
+    forEachDistinctFace(piece.tets[first].data(), std::min(RunLength, piece.tets.size() - first),
+      [&](const Face& face, std::size_t, std::size_t, std::size_t count)
       {
-        for (PointId p : face)
+        if (count == 1)
         {
-          onBoundary[p] = 1;
+          candidates.push_back(face);
         }
+      });
+  }
+  std::sort(candidates.begin(), candidates.end());
+  std::vector<char> onBoundary(piece.numberOfPoints(), 0);
+  for (std::size_t i = 0; i < candidates.size();)
+  {
+    std::size_t next = i + 1;
+    while (next < candidates.size() && candidates[next] == candidates[i])
+    {
+      ++next;
+    }
+    if (next - i == 1)
+    {
+      for (PointId p : candidates[i])
+      {
+        onBoundary[p] = 1;
       }
-    });
+    }
+    i = next;
+  }
   std::vector<PointId> points;
   for (PointId p = 0; p < piece.numberOfPoints(); ++p)
   {

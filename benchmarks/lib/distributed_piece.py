@@ -1,8 +1,9 @@
 """One process's share of a distributed run (`mpiexec -n R pvbatch --mpi --symmetric`): the
-reader, RedistributeDataSet when R > 1, the filter; each process prints its piece's figures as
-one line `PIECE {json}`. Run by benchmarks/distributed."""
+reader, RedistributeDataSet when R > 1, the filter; each process writes its piece's figures to
+FIGURES/piece-<rank>.json (their stdout lines would interleave). Run by benchmarks/distributed."""
 import argparse
 import json
+import os
 import time
 
 from paraview import simple
@@ -18,6 +19,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--plugin", required=True)
     parser.add_argument("--input", required=True)
+    parser.add_argument("--figures", required=True, help="folder for piece-<rank>.json")
     parser.add_argument("--set", nargs="*", default=[], metavar="PROPERTY=VALUE")
     options = parser.parse_args()
     controller = vtkMultiProcessController.GetGlobalController()
@@ -50,9 +52,10 @@ def main():
                "cells": piece.GetNumberOfCells(), "points": piece.GetNumberOfPoints()}
     for name in ("TotalSeconds", "AdaptSeconds", "ImproveSeconds", "PartitionSeconds",
                  "MergeSeconds", "QualitySeconds", "ProcessSharedPoints", "ProcessExchangeBytes",
-                 "ProcessNumberingSeconds", "NumberOfThreads", "NumberOfPartitions"):
+                 "ProcessNumberingSeconds", "GhostCellSeconds", "NumberOfThreads", "NumberOfPartitions"):
         figures[name] = field_value(piece, name)
-    print("PIECE " + json.dumps(figures), flush=True)
+    with open(os.path.join(options.figures, "piece-%d.json" % figures["rank"]), "w") as handle:
+        json.dump(figures, handle)
 
 
 if __name__ == "__main__":
