@@ -466,7 +466,7 @@ bool vtkCoarseGrainedMeshAdaptation::SeparateTriangles(PieceRun& run)
 
 //------------------------------------------------------------------------------
 bool vtkCoarseGrainedMeshAdaptation::ConvertPiece(
-  PieceRun& run, const std::vector<std::string>& materialLabels)
+  PieceRun& run, const std::vector<std::string>& materialLabels, bool distributed)
 {
   const std::string regionArrayName = this->ResolveRegionArrayName(run.input);
   cgmesh::Status status = cgmesh::convertToTetMesh(
@@ -483,7 +483,11 @@ bool vtkCoarseGrainedMeshAdaptation::ConvertPiece(
   }
   if (run.withTriangles && !(status = cgmesh::checkTriangleCells(run.mesh, run.triangles)).ok())
   {
-    vtkErrorMacro(<< "Cannot refine the input's triangles: " << status.message() << ".");
+    vtkErrorMacro(<< "Cannot refine the input's triangles: " << status.message() << "."
+                  << (distributed ? " Across processes a triangle must be in the piece that "
+                                    "holds its tetrahedron; RedistributeDataSet places each cell "
+                                    "by itself and can separate them."
+                                  : ""));
     return false;
   }
   return true;
@@ -663,7 +667,8 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
         (this->Internals->MaterialLabelArrays.empty() ? "" : ",") + name;
     }
   }
-  if (!passed(!hasPiece || this->ConvertPiece(run, labels), "reading its piece of the input"))
+  if (!passed(!hasPiece || this->ConvertPiece(run, labels, group != nullptr),
+        "reading its piece of the input"))
   {
     return 0;
   }

@@ -333,7 +333,8 @@ protected:
   // its own error and returns false on failure.
   struct PieceRun;
   bool SeparateTriangles(PieceRun& run);
-  bool ConvertPiece(PieceRun& run, const std::vector<std::string>& materialLabels);
+  bool ConvertPiece(
+    PieceRun& run, const std::vector<std::string>& materialLabels, bool distributed);
   bool AdaptPiece(
     PieceRun& run, const cgmesh::AdaptationOptions& options, vtkUnstructuredGrid* output);
   // Across processes: global point and cell ids, and ghost cells when the pipeline asks for them.

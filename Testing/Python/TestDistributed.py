@@ -7,8 +7,9 @@ duplicate points, no face in three tets, no hanging face: the boundary area is t
 the input's volume, region volumes and material-interface area. Global cell ids number the cells
 0..N-1 once; ghost cells, when the writer asks for them, carry the ids of cells another process
 owns. An input read on one process is spread first, with a note; 1 and 2 threads per process
-write the same pieces; and a piece that is not a tet mesh stops every process with a message,
-instead of leaving the others waiting."""
+write the same pieces; a piece that is not a tet mesh stops every process with a message,
+instead of leaving the others waiting; and tagged triangles that RedistributeDataSet parts from
+their tets are refused with the cause."""
 import argparse
 import glob
 import os
@@ -196,7 +197,7 @@ def make_inputs(options):
     gmsh_path = os.path.join(options.scratch, "two-volumes-tets.vtu")
     write_grid(gmsh_mesh.points, gmsh_mesh.cells_dict["tetra"],
                gmsh_mesh.cell_data_dict["Tag"]["tetra"].astype(numpy.int32), "Tag", gmsh_path)
-    return finfet, cube, box_path, gmsh_path
+    return finfet, cube, box_path, gmsh_path, gmsh_source
 
 
 def test_bad_piece(options, finfet):
@@ -239,6 +240,18 @@ def test_bad_piece(options, finfet):
           "bad piece: a process wrote cells after the error")
 
 
+def test_separated_triangles(options, gmsh_with_triangles):
+    """RedistributeDataSet places the Gmsh mesh's tagged triangles apart from some of their tets:
+    every process stops, and the one whose triangles lost their tets says what is needed."""
+    result = refine_distributed(options, 2, gmsh_with_triangles,
+                                os.path.join(options.scratch, "separated-triangles"),
+                                ["RegionArrayName=Tag"])
+    text = result.stdout + result.stderr
+    check("not faces of its tetrahedra" in text and
+          "must be in the piece that holds its tetrahedron" in text,
+          "separated triangles: no error naming the cause: " + text[-3000:])
+
+
 def main():
     parser = argparse.ArgumentParser()
     for name in ("mpiexec", "pvbatch", "plugin", "cgmesh", "tetgen", "gmsh", "scratch"):
@@ -246,7 +259,7 @@ def main():
     options = parser.parse_args()
     shutil.rmtree(options.scratch, ignore_errors=True)
     os.makedirs(options.scratch)
-    finfet, cube, box, gmsh = make_inputs(options)
+    finfet, cube, box, gmsh, gmsh_with_triangles = make_inputs(options)
     if tagged.FAILURES:
         return 1
     material = ["RegionArrayName=Material", "NumberOfPartitions=16"]
@@ -275,6 +288,7 @@ def main():
     if ghosts:
         check(ghosts[3] > 0, "gmsh: ghost cells were asked for and none came")
     test_bad_piece(options, finfet)
+    test_separated_triangles(options, gmsh_with_triangles)
     if tagged.FAILURES:
         print("%d failures" % len(tagged.FAILURES))
         return 1
