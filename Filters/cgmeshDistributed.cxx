@@ -1,7 +1,7 @@
 #include "cgmeshDistributed.h"
 
+#include "AdaptationPlan.h"
 #include "Core/FaceKey.h"
-#include "Core/Geometry.h"
 
 #include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <numeric>
@@ -180,39 +179,30 @@ void resolveDistributedOptions(
   options.orderCornersByCoordinates = true;
   // "Every core" means this process's share of the cores it may run on: processes on one host
   // would otherwise each start a thread per core.
-  const int local = processesOnThisHost(group);
   if (options.numberOfThreads == 0)
   {
+    const int local = processesOnThisHost(group);
     cpu_set_t cores;
     const int available = sched_getaffinity(0, sizeof(cores), &cores) == 0 ? CPU_COUNT(&cores) : 1;
     options.numberOfThreads = std::max(1, available / local);
   }
-  const double tets = group.sum(static_cast<double>(piece.numberOfTets()));
+  // The whole mesh's mean: the pieces' means weighted by their tet counts.
+  const double tets = static_cast<double>(piece.numberOfTets());
+  const auto meanOfAll = [&](double pieceMean)
+  {
+    const double all = group.sum(tets);
+    return all > 0 ? group.sum(pieceMean * tets) / all : 0;
+  };
   if (options.method == RefinementMethod::Delaunay)
   {
     if (!(options.maximumVolume > 0))
     {
-      double volume = 0;
-      for (const Tet& tet : piece.tets)
-      {
-        volume += std::abs(signedVolume6(piece, tet)) / 6.0;
-      }
-      const double total = group.sum(volume);
-      options.maximumVolume = tets > 0 ? options.volumeFactor * total / tets : 0;
+      options.maximumVolume = options.volumeFactor * meanOfAll(meanTetVolume(piece));
     }
   }
   else if (!(options.maximumEdgeLength > 0))
   {
-    double length = 0;
-    for (const Tet& tet : piece.tets)
-    {
-      for (const auto& edge : TetEdgeCorners)
-      {
-        length += std::sqrt(squaredEdgeLength(piece, tet[edge[0]], tet[edge[1]]));
-      }
-    }
-    const double total = group.sum(length);
-    options.maximumEdgeLength = tets > 0 ? options.edgeLengthFactor * total / (6.0 * tets) : 0;
+    options.maximumEdgeLength = options.edgeLengthFactor * meanOfAll(meanTetEdgeLength(piece));
   }
 }
 
@@ -281,9 +271,8 @@ GlobalNumbering numberAcrossProcesses(const ProcessGroup& group, const TetMesh& 
   numbering.exchangedBytes +=
     static_cast<long long>((allCoordinates.size() - boundaryCoordinates.size()) * sizeof(double));
 
-  // For each boundary point: the lowest other rank holding it (and where in that rank's list), or
-  // -1; and whether any other rank holds it.
-  std::vector<int> ownerRank(boundary.size(), -1);
+  // For each boundary point: where the lowest lower rank holding it has it in the gathered lists
+  // (an index into every process's boundary lists), or -1; and whether any other rank holds it.
   std::vector<long long> ownerSlot(boundary.size(), -1);
   std::vector<char> shared(boundary.size(), 0);
   for (int r = 0; r < group.size(); ++r)
@@ -300,10 +289,9 @@ GlobalNumbering numberAcrossProcesses(const ProcessGroup& group, const TetMesh& 
         continue;
       }
       shared[found->second] = 1;
-      if (r < group.rank() && ownerRank[found->second] < 0)
+      if (r < group.rank() && ownerSlot[found->second] < 0)
       {
-        ownerRank[found->second] = r;
-        ownerSlot[found->second] = slot; // an index into every process's boundary lists
+        ownerSlot[found->second] = slot;
       }
     }
   }
@@ -313,7 +301,7 @@ GlobalNumbering numberAcrossProcesses(const ProcessGroup& group, const TetMesh& 
   std::vector<char> ownedElsewhere(points, 0);
   for (std::size_t b = 0; b < boundary.size(); ++b)
   {
-    ownedElsewhere[boundary[b]] = ownerRank[b] >= 0;
+    ownedElsewhere[boundary[b]] = ownerSlot[b] >= 0;
   }
   long long largestKept = -1;
   long long toNumber = 0;
@@ -349,7 +337,7 @@ GlobalNumbering numberAcrossProcesses(const ProcessGroup& group, const TetMesh& 
     static_cast<long long>((allIds.size() - boundaryIds.size()) * sizeof(long long));
   for (std::size_t b = 0; b < boundary.size(); ++b)
   {
-    if (ownerRank[b] >= 0 && numbering.pointIds[boundary[b]] < 0)
+    if (ownerSlot[b] >= 0 && numbering.pointIds[boundary[b]] < 0)
     {
       numbering.pointIds[boundary[b]] = allIds[ownerSlot[b]];
     }

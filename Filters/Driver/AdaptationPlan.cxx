@@ -160,31 +160,6 @@ Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool hasS
   return Status::success();
 }
 
-// Mean over the six edges of every tet (shared edges count once per tet, which weighs edges by
-// how many tets use them and needs no edge list).
-double meanTetEdgeLength(const TetMesh& mesh)
-{
-  double sum = 0;
-  for (const Tet& tet : mesh.tets)
-  {
-    for (const auto& edge : TetEdgeCorners)
-    {
-      sum += std::sqrt(squaredEdgeLength(mesh, tet[edge[0]], tet[edge[1]]));
-    }
-  }
-  return mesh.tets.empty() ? 0 : sum / (6.0 * static_cast<double>(mesh.tets.size()));
-}
-
-double meanTetVolume(const TetMesh& mesh)
-{
-  double sum = 0;
-  for (const Tet& tet : mesh.tets)
-  {
-    sum += std::abs(signedVolume6(mesh, tet)) / 6.0;
-  }
-  return mesh.tets.empty() ? 0 : sum / static_cast<double>(mesh.tets.size());
-}
-
 // What partitionByRegion() will make: each region min(partitionsPerRegion, its tets) parts.
 int partitionsByRegion(const TetMesh& input, int partitionsPerRegion)
 {
@@ -266,6 +241,31 @@ PartitionerKind resolvePartitioner(const AdaptationOptions& options)
 }
 
 } // namespace
+
+// Mean over the six edges of every tet (shared edges count once per tet, which weighs edges by
+// how many tets use them and needs no edge list).
+double meanTetEdgeLength(const TetMesh& mesh)
+{
+  double sum = 0;
+  for (const Tet& tet : mesh.tets)
+  {
+    for (const auto& edge : TetEdgeCorners)
+    {
+      sum += std::sqrt(squaredEdgeLength(mesh, tet[edge[0]], tet[edge[1]]));
+    }
+  }
+  return mesh.tets.empty() ? 0 : sum / (6.0 * static_cast<double>(mesh.tets.size()));
+}
+
+double meanTetVolume(const TetMesh& mesh)
+{
+  double sum = 0;
+  for (const Tet& tet : mesh.tets)
+  {
+    sum += std::abs(signedVolume6(mesh, tet)) / 6.0;
+  }
+  return mesh.tets.empty() ? 0 : sum / static_cast<double>(mesh.tets.size());
+}
 
 Status checkOptionsAndInput(const TetMesh& input, const AdaptationOptions& options)
 {

@@ -39,6 +39,11 @@ Status checkOptionsAndInput(const TetMesh& input, const AdaptationOptions& optio
 AdaptationPlan resolvePlan(
   const TetMesh& input, const AdaptationOptions& options, std::vector<AdaptationWarning>& warnings);
 
+// The input's mean tet edge length (over the six edges of every tet) and mean tet volume: what
+// EdgeLengthFactor and VolumeFactor scale.
+double meanTetEdgeLength(const TetMesh& mesh);
+double meanTetVolume(const TetMesh& mesh);
+
 } // namespace cgmesh
 
 #endif
