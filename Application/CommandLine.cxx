@@ -288,6 +288,12 @@ Status checkMethodOptions(const std::map<std::string, std::string>& options)
   }
   if (options.count("--max-volume") && options.count("--volume-factor"))
     return Status::failure("give either --max-volume or --volume-factor, not both");
+  if (options.count("--size-array"))
+    for (const char* bound :
+      { "--max-edge-length", "--edge-length-factor", "--max-volume", "--volume-factor" })
+      if (options.count(bound))
+        return Status::failure(std::string("give either --size-array or ") + bound +
+          ": the size field replaces the threshold and the volume bound");
   return Status::success();
 }
 

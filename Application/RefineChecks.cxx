@@ -3,6 +3,7 @@
 #include "AdaptationPlan.h"
 #include "Core/Geometry.h"
 #include "Core/TetMesh.h"
+#include "Refinement/TetGenRefiner.h"
 #include "cgmeshVTKConversion.h"
 
 #include "vtkUnstructuredGrid.h"
@@ -141,6 +142,12 @@ std::string nothingRefinedWarning(
   {
     if (statistics.tetgenPoints > 0)
       return std::string();
+    if (!options.sizeArrayName.empty())
+    {
+      text << "TetGen inserted no point: no tet's circumradius exceeds " << TetGenRadiusPerSize
+           << " times the size field '" << options.sizeArrayName << "' at its corners";
+      return text.str();
+    }
     text << "TetGen inserted no point under the volume bound " << statistics.volumeBound
          << " and the radius-edge bound " << options.radiusEdgeRatio
          << " (the largest input tet has volume " << largestVolume(mesh) << ")";

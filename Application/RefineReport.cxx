@@ -308,6 +308,9 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
          << std::setw(24) << "iterations" << statistics.iterationsRun << " of "
          << statistics.numberOfIterations
          << (statistics.refinementConverged ? " (converged: the last pass added no point)" : "")
+         << (statistics.method == "delaunay" && !statistics.sizeArray.empty()
+                ? " (Delaunay to a size field: one pass, TetGen meets the field in it)"
+                : "")
          << "\n"
          << std::setw(24) << "method" << statistics.method << "\n";
   if (statistics.sizeArray.empty())

@@ -235,7 +235,7 @@ std::string unsupportedAcrossProcesses(const AdaptationOptions& options, bool ha
 {
   const char* why = "a point of a shared face would get its size from the tets of one piece only, "
                     "and the pieces would split the face differently";
-  if (hasSizeArray && options.method == RefinementMethod::Template)
+  if (hasSizeArray)
   {
     return std::string("SizeArrayName is not supported across processes yet: ") + why;
   }

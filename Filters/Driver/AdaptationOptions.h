@@ -146,16 +146,17 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "split edges longer than L (absolute); 0: use EdgeLengthFactor", &O::maximumEdgeLength },
     { "EdgeLengthFactor", "--edge-length-factor", "F", K::Real, 0, Unbounded, 0.5, "", S::Template,
       "split edges longer than F x the input's mean edge length", &O::edgeLengthFactor },
-    { "SizeArrayName", "--size-array", "NAME", K::Text, 0, 0, 0, "", S::Template,
-      "point array (or cell array, averaged to the points) of target edge lengths h: edges "
-      "longer than sqrt(2) h at their midpoint are split, instead of the threshold; set "
-      "NumberOfIterations high enough (passes stop when nothing changes)",
+    { "SizeArrayName", "--size-array", "NAME", K::Text, 0, 0, 0, "", S::Any,
+      "point array (or cell array, averaged to the points) of target edge lengths h, instead of "
+      "the threshold or volume bound: Template splits edges longer than sqrt(2) h at their "
+      "midpoint (set NumberOfIterations high enough: passes stop when nothing changes); "
+      "Delaunay gives TetGen 0.7 h per point as its size bound (switch m)",
       &O::sizeArrayName },
-    { "SizeGradation", "--size-gradation", "G", K::Real, 1, Unbounded, 1.3, "", S::Template,
+    { "SizeGradation", "--size-gradation", "G", K::Real, 1, Unbounded, 1.3, "", S::Any,
       "with SizeArrayName: the field is lowered until neighbouring points' sizes differ by at "
       "most this factor per edge (as MMG's -hgrad); a large value leaves it as given",
       &O::sizeGradation },
-    { "Coarsen", "--no-coarsen", "", K::Boolean, 0, 1, 1, "", S::Template,
+    { "Coarsen", "--no-coarsen", "", K::Boolean, 0, 1, 1, "", S::Any,
       "with SizeArrayName: collapse edges shorter than h / sqrt(2) at vertices on no boundary or "
       "material interface, keeping every tet valid and no worse than mean ratio 0.3 (or its "
       "ring's worst); --no-coarsen only refines",

@@ -137,18 +137,13 @@ Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool hasS
   {
     return invalidOption("set a positive maximum edge length or edge length factor");
   }
-  if (options.method == RefinementMethod::Delaunay && hasSizes)
-  {
-    return invalidOption("a size field works with the Template method only; Delaunay refines to "
-                         "one volume bound (MaximumVolume or VolumeFactor)");
-  }
   if (hasSizes && !(options.sizeGradation >= 1.0))
   {
     return invalidOption("the size gradation must be at least 1");
   }
   if (options.method == RefinementMethod::Delaunay)
   {
-    if (!(options.maximumVolume > 0) && !(options.volumeFactor > 0))
+    if (!hasSizes && !(options.maximumVolume > 0) && !(options.volumeFactor > 0))
     {
       return invalidOption("set a positive maximum volume or volume factor");
     }
@@ -175,6 +170,31 @@ int partitionsByRegion(const TetMesh& input, int partitionsPerRegion)
   return static_cast<int>(total);
 }
 
+// What Delaunay refinement makes of the input: under the volume bound, or with a size field (then
+// `volumeBound` is 0) tet by tet at the mean size of its corners.
+double forecastDelaunayOutput(const TetMesh& input, double volumeBound)
+{
+  if (!input.hasSizes())
+  {
+    return forecastDelaunayTets(
+      meanTetVolume(input) * static_cast<double>(input.numberOfTets()), volumeBound);
+  }
+  double total = 0;
+  for (const Tet& tet : input.tets)
+  {
+    const double volume = signedVolume6(input.point(tet[0]), input.point(tet[1]),
+                            input.point(tet[2]), input.point(tet[3])) /
+      6.0;
+    double size = 0;
+    for (PointId p : tet)
+    {
+      size += 0.25 * input.sizes[p];
+    }
+    total += forecastDelaunayTetsForSize(volume, size);
+  }
+  return total;
+}
+
 // NumberOfPartitions 0. Templates: 1024, plenty of colour-sized work for many cores. Delaunay:
 // one partition per about 30,000 forecast output tets, between 64 and 1024. Each partition's
 // interface is split by templates before TetGen and TetGen refines towards it, so many small
@@ -187,8 +207,7 @@ int automaticPartitions(const TetMesh& input, const AdaptationOptions& options, 
   {
     return AutomaticTemplatePartitions;
   }
-  const double volume = meanTetVolume(input) * static_cast<double>(input.numberOfTets());
-  const double partitions = forecastDelaunayTets(volume, volumeBound) / DelaunayTetsPerPartition;
+  const double partitions = forecastDelaunayOutput(input, volumeBound) / DelaunayTetsPerPartition;
   return static_cast<int>(std::lround(std::min<double>(
     MaximumAutomaticPartitions, std::max<double>(MinimumAutomaticPartitions, partitions))));
 }
@@ -308,17 +327,19 @@ AdaptationPlan resolvePlan(
 {
   AdaptationPlan plan;
   plan.threads = resolveThreadCount(options.numberOfThreads);
-  if (options.method == RefinementMethod::Delaunay)
+  if (input.hasSizes())
+  {
+    // Edges are measured against the field, and TetGen gets it per point: no single threshold
+    // or volume bound.
+    plan.sizeField = true;
+  }
+  else if (options.method == RefinementMethod::Delaunay)
   {
     plan.volumeBound = options.maximumVolume > 0 ? options.maximumVolume
                                                  : options.volumeFactor * meanTetVolume(input);
     plan.edgeLengthThreshold = interfaceEdgeLengthForVolume(plan.volumeBound);
     // Improvement must not undo Delaunay refinement's volume bound.
     plan.improvementVolumeBound = plan.volumeBound;
-  }
-  else if (input.hasSizes())
-  {
-    plan.sizeField = true; // edges are measured against the field; no single threshold
   }
   else
   {

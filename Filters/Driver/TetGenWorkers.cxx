@@ -52,8 +52,9 @@ bool receiveArray(int socket, T*& values, std::int64_t& count)
 // The header's last entry says what follows the tets and their attributes.
 enum MeshParts : int
 {
-  WithFaces = 1,     // the faces and their markers (a request)
-  WithNeighbours = 2 // the face neighbours of each tet (a reply to TetGen's switch n)
+  WithFaces = 1,      // the faces and their markers (a request)
+  WithNeighbours = 2, // the face neighbours of each tet (a reply to TetGen's switch n)
+  WithPointSizes = 4  // one size per point (a request with TetGen's switch m)
 };
 
 bool sendMesh(int socket, const tetgenio& io, int parts)
@@ -62,10 +63,16 @@ bool sendMesh(int socket, const tetgenio& io, int parts)
   {
     parts &= ~WithNeighbours;
   }
+  if ((parts & WithFaces) && io.pointmtrlist != nullptr && io.numberofpointmtrs == 1)
+  {
+    parts |= WithPointSizes;
+  }
   const int header[4] = { io.numberofcorners, io.numberoftetrahedronattributes, io.firstnumber,
     parts };
   return sendAll(socket, header, sizeof(header)) &&
     sendArray(socket, io.pointlist, 3 * static_cast<std::int64_t>(io.numberofpoints)) &&
+    (!(parts & WithPointSizes) ||
+      sendArray(socket, io.pointmtrlist, static_cast<std::int64_t>(io.numberofpoints))) &&
     sendArray(
       socket, io.tetrahedronlist, std::int64_t(io.numberofcorners) * io.numberoftetrahedra) &&
     sendArray(socket, io.tetrahedronattributelist,
@@ -94,6 +101,14 @@ bool receiveMesh(int socket, tetgenio& io)
     return false;
   }
   io.numberofpoints = static_cast<int>(count / 3);
+  if (parts & WithPointSizes)
+  {
+    if (!receiveArray(socket, io.pointmtrlist, count) || count != io.numberofpoints)
+    {
+      return false;
+    }
+    io.numberofpointmtrs = 1;
+  }
   if (!receiveArray(socket, io.tetrahedronlist, count) || io.numberofcorners <= 0)
   {
     return false;

@@ -1,7 +1,7 @@
 // Size fields: gradation limiting, refinement to a graded field through adaptMesh() (converged,
 // every edge at most sqrt(2) h at its midpoint, conforming, volumes and regions conserved, the
-// same output for any thread count), coarsening where the field is coarser than the mesh, and
-// the refusal of bad fields.
+// same output for any thread count), the same with the Delaunay method, coarsening where the field
+// is coarser than the mesh, and the refusal of bad fields.
 #include "AdaptationDriver.h"
 #include "Core/ConstrainedFaces.h"
 #include "Core/Geometry.h"
@@ -117,6 +117,71 @@ void test_refinement_to_a_graded_field()
   }
 }
 
+// The Delaunay method with a size field: TetGen gets the sizes per point (switch m) and refines
+// each partition in one pass; the mesh is valid and conserving, the new points carry
+// interpolated sizes, most edges lie within [h / sqrt(2), sqrt(2) h] with none far beyond, the
+// finest part of the field gets the smallest tets, and the output does not depend on the thread
+// count.
+void test_delaunay_refinement_to_a_graded_field()
+{
+  const TetMesh input = gradedCube(5);
+  AdaptationOptions options;
+  options.method = RefinementMethod::Delaunay;
+  options.numberOfIterations = 10; // Delaunay to sizes makes one pass whatever is asked
+  options.numberOfPartitions = 8;
+  options.numberOfThreads = 1;
+  AdaptationResult serial;
+  CHECK(adaptMesh(input, options, serial).ok());
+  CHECK(serial.summary.plan.sizeField);
+  CHECK_EQUAL(serial.summary.plan.volumeBound, 0.0);
+  CHECK_EQUAL(serial.summary.iterationsRun, 1);
+  CHECK_EQUAL(serial.summary.delaunayFallbacks, 0);
+  CHECK(serial.summary.tetgenPoints > 0);
+  CHECK(serial.mesh.numberOfTets() > 10 * input.numberOfTets());
+  cgmesh_test::checkValidAndConserving(input, serial.mesh);
+
+  CHECK_EQUAL(serial.mesh.sizes.size(), static_cast<std::size_t>(serial.mesh.numberOfPoints()));
+  const double finest = *std::min_element(input.sizes.begin(), input.sizes.end());
+  const double coarsest = *std::max_element(input.sizes.begin(), input.sizes.end());
+  for (double size : serial.mesh.sizes)
+  {
+    CHECK(size >= finest * (1 - 1e-12) && size <= coarsest * (1 + 1e-12));
+  }
+  CHECK(serial.summary.edgeSizes.shareWithinBounds > 0.85);
+  const auto& histogram = serial.summary.edgeSizes.histogram;
+  CHECK(histogram[5] < serial.summary.edgeSizes.edges / 1000); // at most 0.1% beyond 2 h
+  // Tets near the fine band (x = 0.5) are smaller than those near the coarse faces x = 0, 1.
+  double nearBand = 0, nearFaces = 0;
+  int bandTets = 0, faceTets = 0;
+  for (const Tet& tet : serial.mesh.tets)
+  {
+    const double x = 0.25 *
+      (serial.mesh.point(tet[0])[0] + serial.mesh.point(tet[1])[0] + serial.mesh.point(tet[2])[0] +
+        serial.mesh.point(tet[3])[0]);
+    const double volume = signedVolume6(serial.mesh.point(tet[0]), serial.mesh.point(tet[1]),
+                            serial.mesh.point(tet[2]), serial.mesh.point(tet[3])) /
+      6.0;
+    if (std::abs(x - 0.5) < 0.1)
+    {
+      nearBand += volume;
+      ++bandTets;
+    }
+    else if (std::abs(x - 0.5) > 0.4)
+    {
+      nearFaces += volume;
+      ++faceTets;
+    }
+  }
+  CHECK(bandTets > 0 && faceTets > 0);
+  CHECK(nearBand / bandTets < 0.25 * (nearFaces / faceTets));
+
+  options.numberOfThreads = 2;
+  AdaptationResult parallel;
+  CHECK(adaptMesh(input, options, parallel).ok());
+  CHECK(cgmesh_test::identicalResults(serial, parallel));
+  CHECK(parallel.mesh.sizes == serial.mesh.sizes);
+}
+
 // The coordinates of the points on boundary and region-interface faces, sorted.
 std::vector<std::array<double, 3>> constrainedPoints(const TetMesh& mesh)
 {
@@ -215,9 +280,6 @@ void test_bad_size_fields_are_refused()
   CHECK(adaptMesh(input, options, result).kind() == ErrorKind::InvalidInput);
 
   input = gradedCube(2);
-  options.method = RefinementMethod::Delaunay;
-  CHECK(adaptMesh(input, options, result).kind() == ErrorKind::InvalidOption);
-  options.method = RefinementMethod::Template;
   options.sizeGradation = 0.5;
   CHECK(adaptMesh(input, options, result).kind() == ErrorKind::InvalidOption);
 }
@@ -336,6 +398,7 @@ int main()
 {
   test_gradation_limits_neighbouring_sizes();
   test_refinement_to_a_graded_field();
+  test_delaunay_refinement_to_a_graded_field();
   test_coarsening_where_the_field_is_coarse();
   test_bad_size_fields_are_refused();
   test_refinement_regions_and_box();

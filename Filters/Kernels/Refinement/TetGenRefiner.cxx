@@ -69,6 +69,12 @@ public:
     return pointCoordinates(*this->Context.coordinates, this->Refinement.newCoordinates, id);
   }
 
+  double sizeOf(PointId id) const
+  {
+    return isProvisional(id) ? this->Refinement.newSizes[provisionalIndex(id)]
+                             : (*this->Context.sizes)[id];
+  }
+
   // Fills TetGen's input from the partition and the faces it must keep.
   // `order` says in which order TetGen receives the tets (the attempts of refineWithTetGen).
   void prepareInput(tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order)
@@ -92,6 +98,17 @@ public:
     for (int i = 0; i < in.numberofpoints; ++i)
     {
       std::copy_n(this->coordinatesOf(this->Numbering.idOfLocal[i]), 3, in.pointlist + 3 * i);
+    }
+    if (this->Context.sizes)
+    {
+      // TetGen's sizing input (switch m): it splits a tet whose circumradius exceeds the size at
+      // one of its corners, and interpolates sizes at the points it inserts.
+      in.numberofpointmtrs = 1;
+      in.pointmtrlist = new REAL[in.numberofpoints];
+      for (int i = 0; i < in.numberofpoints; ++i)
+      {
+        in.pointmtrlist[i] = TetGenRadiusPerSize * this->sizeOf(this->Numbering.idOfLocal[i]);
+      }
     }
     in.numberoftetrahedra = static_cast<int>(this->Partition.tets.size());
     in.numberofcorners = 4;
@@ -308,6 +325,7 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
   std::vector<PointId> idOfOutput(this->Numbering.idOfLocal);
   std::vector<std::size_t> tetOfOutput(this->Numbering.tetOfLocal);
   std::vector<PointSource> sources;
+  std::vector<double> sizes;
   for (int i = inputPointCount; i < out.numberofpoints; ++i)
   {
     // TetGen inserts points near the ones before them, often in the same old tet.
@@ -320,6 +338,15 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
       source.weights[k] = where.barycentric[k];
     }
     sources.push_back(source);
+    if (this->Context.sizes)
+    {
+      double size = 0; // interpolated like the point's data
+      for (int k = 0; k < 4; ++k)
+      {
+        size += source.weights[k] * this->sizeOf(source.points[k]);
+      }
+      sizes.push_back(size);
+    }
     idOfOutput.push_back(-static_cast<PointId>(refinement.newPointSources.size() + sources.size()));
     tetOfOutput.push_back(where.tet);
   }
@@ -351,15 +378,17 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
     out.pointlist + 3 * inputPointCount, out.pointlist + 3 * out.numberofpoints);
   refinement.newPointSources.insert(
     refinement.newPointSources.end(), sources.begin(), sources.end());
+  refinement.newSizes.insert(refinement.newSizes.end(), sizes.begin(), sizes.end());
   outcome.tetgenPoints = out.numberofpoints - inputPointCount;
   partition = std::move(refined);
 }
 
-std::string tetgenSwitches(const DelaunayParameters& parameters, bool qualityBound)
+std::string tetgenSwitches(const DelaunayParameters& parameters, bool qualityBound, bool sizeField)
 {
   // r: refine the given mesh; Y: keep the given boundary and interface faces; M: do not merge
   // coplanar facets; Q: quiet; n: return the face neighbours (for validation); q: the
-  // radius-edge bound, when asked; a: the volume bound.
+  // radius-edge bound, when asked; a: the volume bound, when there is one; m: the sizes given
+  // per point, with a size field.
   std::string switches = "rYMQn";
   char bound[64];
   if (qualityBound)
@@ -367,8 +396,17 @@ std::string tetgenSwitches(const DelaunayParameters& parameters, bool qualityBou
     std::snprintf(bound, sizeof(bound), "q%.17g", parameters.radiusEdgeRatio);
     switches += bound;
   }
-  std::snprintf(bound, sizeof(bound), "a%.17g", parameters.maximumVolume);
-  return switches + bound;
+  else if (sizeField)
+  {
+    // TetGen refines only with q; a radius-edge bound no tet reaches leaves the shapes alone.
+    switches += "q1000";
+  }
+  if (parameters.maximumVolume > 0)
+  {
+    std::snprintf(bound, sizeof(bound), "a%.17g", parameters.maximumVolume);
+    switches += bound;
+  }
+  return sizeField ? switches + "m" : switches;
 }
 
 // One TetGen call of a partition: the order the tets are handed over in, and whether the
@@ -406,7 +444,8 @@ std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& 
     TetGenSession session(partition, context, refinement);
     tetgenio in, out;
     session.prepareInput(in, keptFaces, attempt.order);
-    failure = runTetGen(in, tetgenSwitches(parameters, attempt.qualityBound), out);
+    failure = runTetGen(
+      in, tetgenSwitches(parameters, attempt.qualityBound, context.sizes != nullptr), out);
     if (failure.empty())
     {
       failure = session.validate(in, out);
@@ -426,11 +465,25 @@ std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& 
   return failure;
 }
 
+// TetGen's output tets per regular tet of edge h that fills the same volume: 1.68 M tets on the
+// Big cube with h = 0.01 + 0.08 |x - 0.5|, whose volume holds 1.02 M regular tets.
+constexpr double SizeFieldTetsPerRegularTet = 1.65;
+
+double regularTetVolume(double edge)
+{
+  return edge * edge * edge / (6.0 * std::sqrt(2.0));
+}
+
 } // namespace
 
 double forecastDelaunayTets(double volume, double maximumVolume)
 {
   return 3.0 * volume / maximumVolume;
+}
+
+double forecastDelaunayTetsForSize(double volume, double size)
+{
+  return SizeFieldTetsPerRegularTet * volume / regularTetVolume(size);
 }
 
 double interfaceEdgeLengthForVolume(double maximumVolume)

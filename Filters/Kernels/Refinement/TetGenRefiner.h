@@ -1,6 +1,7 @@
 // Delaunay refinement of one partition: its interface and material-interface edges are first split
 // by templates (so neighbours can heal them through the outbox), then TetGen refines the interior
-// with every boundary and material-interface face kept as it is (switches r, Y, q, a).
+// with every boundary and material-interface face kept as it is (switches r, Y, q, and a for a
+// volume bound or m for a size field: RefinementContext::sizes).
 // A TetGen failure (a thrown int, or output that does not validate) never loses the partition: it
 // falls back to template refinement of the interior edges.
 #ifndef cgmesh_TetGenRefiner_h
@@ -27,9 +28,16 @@ struct DelaunayParameters
 // regular tetrahedron of that volume, (6 sqrt(2) V)^(1/3).
 double interfaceEdgeLengthForVolume(double maximumVolume);
 
+// With a size field, TetGen gets this times h per point: it splits a tet whose circumradius
+// exceeds its corners' value, and a regular tet of edge h has circumradius 0.61 h. Chosen by
+// measurement on the Big cube with a graded field (benchmarks/size-field): edges within
+// [h / sqrt(2), sqrt(2) h] peak near this value (see docs/design.md).
+constexpr double TetGenRadiusPerSize = 0.7;
 // About how many tets TetGen makes of `volume` under the bound: its tets average about a third
 // of the bound (measured on cubes and FinFETs). Used by the size guard and the partition count.
 double forecastDelaunayTets(double volume, double maximumVolume);
+// The same for a size field: `volume` filled at size h (a mean over it).
+double forecastDelaunayTetsForSize(double volume, double size);
 
 // Runs TetGen with the given switches on `in`, filling `out`; returns an empty string on success,
 // else why it failed. The driver runs the calls in worker processes (see TetGenWorkers.h). A
