@@ -178,9 +178,21 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
   return status;
 }
 
-Status improveMembers(IterationContext& iteration, const std::vector<int>& members,
-  AdaptationState& state, AdaptationSummary& summary)
+// A partition that a later refinement pass left as it was (no point made, none healed) is as the
+// previous pass's improvement left it, and neighbours never change its tets: improving it again
+// would repeat the same attempts. With a size field the last pass is always such a pass, and on
+// the graded Big cube it cost a quarter of the improvement time.
+bool unchangedSinceLastImprovement(
+  const ColorLoopSetup& setup, int iterationIndex, const PartitionRefinement& refinement)
 {
+  return setup.refine && iterationIndex > 0 && refinement.newPointSources.empty() &&
+    refinement.healedSplits == 0;
+}
+
+Status improveMembers(IterationContext& iteration, const std::vector<int>& members,
+  int iterationIndex, AdaptationState& state, AdaptationSummary& summary)
+{
+
   std::vector<ImprovementStatistics> statistics(members.size());
   std::vector<Status> outcomes(members.size(), Status::success());
   Status status = runParallel(iteration.setup.threads, static_cast<std::int64_t>(members.size()),
@@ -188,6 +200,10 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
     {
       const int p = members[i];
       PartitionRefinement& refinement = iteration.refinements[p];
+      if (unchangedSinceLastImprovement(iteration.setup, iterationIndex, refinement))
+      {
+        return;
+      }
       PartitionPoints points{ &state.coordinates, &refinement.newCoordinates };
       if (iteration.setup.sizeField)
       {
@@ -229,7 +245,7 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
   if (setup.improve)
   {
     reporter.enter(Phase::Improve);
-    status = improveMembers(iteration, members, state, summary);
+    status = improveMembers(iteration, members, iterationIndex, state, summary);
     if (!status.ok())
     {
       return status;

@@ -15,9 +15,10 @@ namespace cgmesh
 namespace
 {
 
-// Every edge of the mesh once, as (low id, high id) in increasing order. Through the tets
-// around each point rather than one sort of all 6n edge copies, which took 1.2 s of a 2 M-tet
-// output's 1.7 s measurement.
+// Every edge of the mesh once, as (low id, high id): by low id, each low id's partners in the
+// order its tets meet them. Through the tets around each point, with a mark per partner rather
+// than a sort: one sort of all 6n edge copies took 1.2 s of a 2 M-tet output's 1.7 s
+// measurement, and sorting each point's partners 0.5 s more than the marks.
 std::vector<std::pair<PointId, PointId>> uniqueEdges(const TetMesh& mesh)
 {
   const std::size_t pointCount = static_cast<std::size_t>(mesh.numberOfPoints());
@@ -44,25 +45,20 @@ std::vector<std::pair<PointId, PointId>> uniqueEdges(const TetMesh& mesh)
   }
   std::vector<std::pair<PointId, PointId>> edges;
   edges.reserve(pointCount * 7);
-  std::vector<PointId> higher;
+  std::vector<PointId> lastPartnerOf(pointCount, -1); // b was met as a's partner when a
   for (std::size_t a = 0; a < pointCount; ++a)
   {
-    higher.clear();
+    const PointId low = static_cast<PointId>(a);
     for (std::int64_t k = offsets[a]; k < offsets[a + 1]; ++k)
     {
       for (PointId b : mesh.tets[tetsAround[k]])
       {
-        if (b > static_cast<PointId>(a))
+        if (b > low && lastPartnerOf[b] != low)
         {
-          higher.push_back(b);
+          lastPartnerOf[b] = low;
+          edges.emplace_back(low, b);
         }
       }
-    }
-    std::sort(higher.begin(), higher.end());
-    higher.erase(std::unique(higher.begin(), higher.end()), higher.end());
-    for (PointId b : higher)
-    {
-      edges.emplace_back(static_cast<PointId>(a), b);
     }
   }
   return edges;
