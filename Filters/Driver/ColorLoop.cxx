@@ -181,7 +181,7 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
 // A partition that a later refinement pass left as it was (no point made, none healed) is as the
 // previous pass's improvement left it, and neighbours never change its tets: improving it again
 // would repeat the same attempts. With a size field the last pass is always such a pass, and on
-// the graded Big cube it cost a quarter of the improvement time.
+// the graded Big cube it cost a sixth of the improvement time (6.6 s against 5.5 s).
 bool unchangedSinceLastImprovement(
   const ColorLoopSetup& setup, int iterationIndex, const PartitionRefinement& refinement)
 {

@@ -18,7 +18,7 @@ namespace
 // Every edge of the mesh once, as (low id, high id): by low id, each low id's partners in the
 // order its tets meet them. Through the tets around each point, with a mark per partner rather
 // than a sort: one sort of all 6n edge copies took 1.2 s of a 2 M-tet output's 1.7 s
-// measurement, and sorting each point's partners 0.5 s more than the marks.
+// measurement, and sorting each point's partners 0.27 s more than the marks on 1.7 M tets.
 std::vector<std::pair<PointId, PointId>> uniqueEdges(const TetMesh& mesh)
 {
   const std::size_t pointCount = static_cast<std::size_t>(mesh.numberOfPoints());
