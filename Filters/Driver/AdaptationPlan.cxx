@@ -179,20 +179,7 @@ double forecastDelaunayOutput(const TetMesh& input, double volumeBound)
     return forecastDelaunayTets(
       meanTetVolume(input) * static_cast<double>(input.numberOfTets()), volumeBound);
   }
-  double total = 0;
-  for (const Tet& tet : input.tets)
-  {
-    const double volume = signedVolume6(input.point(tet[0]), input.point(tet[1]),
-                            input.point(tet[2]), input.point(tet[3])) /
-      6.0;
-    double size = 0;
-    for (PointId p : tet)
-    {
-      size += 0.25 * input.sizes[p];
-    }
-    total += forecastDelaunayTetsForSize(volume, size);
-  }
-  return total;
+  return forecastDelaunayTetsForSizes(input.tets, input.coordinates, input.sizes);
 }
 
 // NumberOfPartitions 0. Templates: 1024, plenty of colour-sized work for many cores. Delaunay:

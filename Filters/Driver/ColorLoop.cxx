@@ -277,27 +277,23 @@ Status checkForecastSize(
         return;
       }
       // What TetGen will make, plus what is there.
-      double volume = 0, added = 0;
-      for (const Tet& tet : partition.tets)
+      double added = 0;
+      if (context.sizes)
       {
-        const double tetVolume =
-          signedVolume6(state.coordinates.data() + 3 * tet[0],
-            state.coordinates.data() + 3 * tet[1], state.coordinates.data() + 3 * tet[2],
-            state.coordinates.data() + 3 * tet[3]) /
-          6.0;
-        volume += tetVolume;
-        if (context.sizes)
-        {
-          const std::vector<double>& sizes = *context.sizes;
-          const double size =
-            0.25 * (sizes[tet[0]] + sizes[tet[1]] + sizes[tet[2]] + sizes[tet[3]]);
-          added += forecastDelaunayTetsForSize(tetVolume, size);
-        }
+        added = forecastDelaunayTetsForSizes(partition.tets, state.coordinates, *context.sizes);
       }
-      // A bound of rounding-noise size (or an overflowing volume) forecasts no finite count: that
-      // is more than any guard allows, not a number to convert.
-      if (!context.sizes)
+      else
       {
+        double volume = 0;
+        for (const Tet& tet : partition.tets)
+        {
+          volume += signedVolume6(state.coordinates.data() + 3 * tet[0],
+                      state.coordinates.data() + 3 * tet[1], state.coordinates.data() + 3 * tet[2],
+                      state.coordinates.data() + 3 * tet[3]) /
+            6.0;
+        }
+        // A bound of rounding-noise size (or an overflowing volume) forecasts no finite count:
+        // that is more than any guard allows, not a number to convert.
         added = forecastDelaunayTets(volume, setup.delaunay.maximumVolume);
       }
       const std::int64_t most = std::numeric_limits<std::int64_t>::max() / (partitions + 1);

@@ -43,6 +43,13 @@ inline const double* pointCoordinates(
   return isProvisional(id) ? provisional.data() + 3 * provisionalIndex(id) : global.data() + 3 * id;
 }
 
+// The size-field value of a global or provisional point (sizes are kept beside coordinates).
+inline double pointSize(
+  const std::vector<double>& global, const std::vector<double>& provisional, PointId id)
+{
+  return isProvisional(id) ? provisional[provisionalIndex(id)] : global[id];
+}
+
 // The position of a vertex in the global order that decides face diagonals. Provisional ids come
 // after every global id, in creation order: exactly the order of the global ids they will get,
 // since ids are handed out colour by colour. So a partition and a neighbour that sees the same

@@ -71,7 +71,7 @@ struct PartitionPoints
     {
       return std::numeric_limits<double>::infinity();
     }
-    return isProvisional(id) ? (*provisionalSizes)[provisionalIndex(id)] : (*globalSizes)[id];
+    return pointSize(*globalSizes, *provisionalSizes, id);
   }
 };
 

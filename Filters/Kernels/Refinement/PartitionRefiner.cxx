@@ -29,8 +29,7 @@ public:
 
   double sizeOf(PointId id) const
   {
-    return isProvisional(id) ? this->Refinement.newSizes[provisionalIndex(id)]
-                             : (*this->Context.sizes)[id];
+    return pointSize(*this->Context.sizes, this->Refinement.newSizes, id);
   }
 
   bool isLong(PointId a, PointId b) const

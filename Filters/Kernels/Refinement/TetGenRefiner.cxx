@@ -71,8 +71,7 @@ public:
 
   double sizeOf(PointId id) const
   {
-    return isProvisional(id) ? this->Refinement.newSizes[provisionalIndex(id)]
-                             : (*this->Context.sizes)[id];
+    return pointSize(*this->Context.sizes, this->Refinement.newSizes, id);
   }
 
   // Fills TetGen's input from the partition and the faces it must keep.
@@ -481,9 +480,20 @@ double forecastDelaunayTets(double volume, double maximumVolume)
   return 3.0 * volume / maximumVolume;
 }
 
-double forecastDelaunayTetsForSize(double volume, double size)
+double forecastDelaunayTetsForSizes(const std::vector<Tet>& tets,
+  const std::vector<double>& coordinates, const std::vector<double>& sizes)
 {
-  return SizeFieldTetsPerRegularTet * volume / regularTetVolume(size);
+  double total = 0;
+  for (const Tet& tet : tets)
+  {
+    const double volume =
+      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]) /
+      6.0;
+    const double size = 0.25 * (sizes[tet[0]] + sizes[tet[1]] + sizes[tet[2]] + sizes[tet[3]]);
+    total += SizeFieldTetsPerRegularTet * volume / regularTetVolume(size);
+  }
+  return total;
 }
 
 double interfaceEdgeLengthForVolume(double maximumVolume)

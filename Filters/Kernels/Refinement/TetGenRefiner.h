@@ -36,8 +36,10 @@ constexpr double TetGenRadiusPerSize = 0.7;
 // About how many tets TetGen makes of `volume` under the bound: its tets average about a third
 // of the bound (measured on cubes and FinFETs). Used by the size guard and the partition count.
 double forecastDelaunayTets(double volume, double maximumVolume);
-// The same for a size field: `volume` filled at size h (a mean over it).
-double forecastDelaunayTetsForSize(double volume, double size);
+// The same for a size field (`sizes` per point of `coordinates`): tet by tet, at the mean size of
+// its corners.
+double forecastDelaunayTetsForSizes(const std::vector<Tet>& tets,
+  const std::vector<double>& coordinates, const std::vector<double>& sizes);
 
 // Runs TetGen with the given switches on `in`, filling `out`; returns an empty string on success,
 // else why it failed. The driver runs the calls in worker processes (see TetGenWorkers.h). A
