@@ -273,7 +273,8 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   MergedMesh merged;
   status = mergePartitions(state.partitions, state.coordinates, state.inputPointCount,
     state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints },
-    options.pointProvenance, summary.plan.sizeField ? &state.sizes : nullptr);
+    options.pointProvenance, summary.plan.sizeField ? &state.sizes : nullptr,
+    parallelForOn(summary.plan.threads));
   if (!status.ok())
   {
     return status;

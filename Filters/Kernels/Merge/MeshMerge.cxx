@@ -150,12 +150,51 @@ void keepProvenanceOfUsedPoints(const PointProvenance& all, const std::vector<Po
   }
 }
 
+// Every partition's tets, renumbered, in partition order. Sized once and filled partition by
+// partition into disjoint ranges: growing three vectors tet by tet cost 0.39 s of the 0.44 s
+// merge of a 6 M-tet output, all of it on one thread.
+Status copyTets(const std::vector<PartitionMesh>& partitions,
+  const std::vector<PointId>& outputIdOf, MergedMesh& merged, const ParallelFor& parallelFor)
+{
+  std::vector<std::size_t> first(partitions.size() + 1, 0);
+  for (std::size_t part = 0; part < partitions.size(); ++part)
+  {
+    first[part + 1] = first[part] + partitions[part].tets.size();
+  }
+  const bool hasRegions = std::any_of(partitions.begin(), partitions.end(),
+    [](const PartitionMesh& partition) { return !partition.regions.empty(); });
+  merged.mesh.tets.resize(first.back());
+  merged.parentCell.resize(first.back());
+  if (hasRegions)
+  {
+    merged.mesh.regions.resize(first.back());
+  }
+  return parallelFor(static_cast<std::int64_t>(partitions.size()),
+    [&](std::int64_t part)
+    {
+      const PartitionMesh& partition = partitions[part];
+      for (std::size_t t = 0; t < partition.tets.size(); ++t)
+      {
+        const Tet& tet = partition.tets[t];
+        const std::size_t at = first[part] + t;
+        merged.mesh.tets[at] = { outputIdOf[tet[0]], outputIdOf[tet[1]], outputIdOf[tet[2]],
+          outputIdOf[tet[3]] };
+        merged.parentCell[at] = partition.parentCells[t];
+        if (hasRegions)
+        {
+          merged.mesh.regions[at] = partition.regions[t];
+        }
+      }
+    });
+}
+
 } // namespace
 
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
   const std::vector<PointSource>& newPointSources, MergedMesh& merged,
-  const RelocationInput& relocation, bool withProvenance, const std::vector<double>* pointSizes)
+  const RelocationInput& relocation, bool withProvenance, const std::vector<double>* pointSizes,
+  const ParallelFor& parallelFor)
 {
   try
   {
@@ -202,22 +241,10 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
         inputPointCount, merged.provenance);
     }
 
-    const bool hasRegions = std::any_of(partitions.begin(), partitions.end(),
-      [](const PartitionMesh& partition) { return !partition.regions.empty(); });
-    for (std::size_t part = 0; part < partitions.size(); ++part)
+    const Status copied = copyTets(partitions, outputIdOf, merged, parallelFor);
+    if (!copied.ok())
     {
-      const PartitionMesh& partition = partitions[part];
-      for (std::size_t t = 0; t < partition.tets.size(); ++t)
-      {
-        const Tet& tet = partition.tets[t];
-        merged.mesh.tets.push_back(
-          { outputIdOf[tet[0]], outputIdOf[tet[1]], outputIdOf[tet[2]], outputIdOf[tet[3]] });
-        merged.parentCell.push_back(partition.parentCells[t]);
-        if (hasRegions)
-        {
-          merged.mesh.regions.push_back(partition.regions[t]);
-        }
-      }
+      return copied;
     }
   }
   catch (const std::bad_alloc&)

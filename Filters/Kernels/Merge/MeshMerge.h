@@ -7,6 +7,7 @@
 #include "Core/EdgeSplits.h"
 #include "Core/PartitionMesh.h"
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 
 #include <vector>
@@ -46,13 +47,15 @@ struct RelocationInput
 };
 
 // `withProvenance` false leaves merged.provenance empty (nothing to interpolate). `pointSizes`
-// (one size per global point) gives merged.mesh.sizes.
+// (one size per global point) gives merged.mesh.sizes. `parallelFor` runs the per-partition
+// copies of the tets; the output does not depend on it.
 
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,
   const std::vector<PointSource>& newPointSources, MergedMesh& merged,
   const RelocationInput& relocation = RelocationInput(), bool withProvenance = true,
-  const std::vector<double>* pointSizes = nullptr);
+  const std::vector<double>* pointSizes = nullptr,
+  const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 } // namespace cgmesh
 
