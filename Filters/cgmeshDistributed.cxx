@@ -233,8 +233,10 @@ std::vector<std::string> unionAcrossProcesses(
 
 std::string unsupportedAcrossProcesses(const AdaptationOptions& options, bool hasSizeArray)
 {
-  const char* why = "a point of a shared face would get its size from the tets of one piece only, "
-                    "and the pieces would split the face differently";
+  // Each option makes an edge's split depend on the tets around it (their sizes, regions or
+  // place), and a piece sees only its own side of a face it shares.
+  const char* why = "a piece decides the edges of a face it shares with another piece from its "
+                    "own tets only, and the pieces would split the face differently";
   if (hasSizeArray)
   {
     return std::string("SizeArrayName is not supported across processes yet: ") + why;

@@ -656,7 +656,10 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   std::vector<std::string> labels;
   if (this->ResolveRegionArrayName(run.input).empty())
   {
-    labels = hasPiece ? cgmesh::findMaterialLabelArrays(run.tets) : labels;
+    if (hasPiece)
+    {
+      labels = cgmesh::findMaterialLabelArrays(run.tets);
+    }
     if (group)
     {
       labels = cgmesh::unionAcrossProcesses(*group, labels);

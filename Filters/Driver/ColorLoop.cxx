@@ -192,7 +192,6 @@ bool unchangedSinceLastImprovement(
 Status improveMembers(IterationContext& iteration, const std::vector<int>& members,
   int iterationIndex, AdaptationState& state, AdaptationSummary& summary)
 {
-
   std::vector<ImprovementStatistics> statistics(members.size());
   std::vector<Status> outcomes(members.size(), Status::success());
   Status status = runParallel(iteration.setup.threads, static_cast<std::int64_t>(members.size()),

@@ -21,3 +21,27 @@ CASES = {
                "template": {"iterations": 1, "edgeLengthFactor": 0.5},
                "delaunay": {"iterations": 1, "volumeFactor": 0.13}},
 }
+
+
+def refine_command(cgmesh, case, method, coloring, threads, source, output, stats_file):
+    """`cgmesh refine` of a case with the study's parameters for `method`."""
+    parameters = case[method]
+    command = [cgmesh, "refine", source, output, "--method", method,
+               "--partitions", str(PARTITIONS), "--iterations", str(parameters["iterations"]),
+               "--coloring", coloring, "--threads", str(threads), "--stats", stats_file]
+    if method == "template":
+        command += ["--edge-length-factor", repr(parameters["edgeLengthFactor"])]
+    else:
+        command += ["--volume-factor", repr(parameters["volumeFactor"])]
+    if case["regionArray"]:
+        command += ["--region-array", case["regionArray"]]
+    return command
+
+
+def tetgen_command(cgmesh, case, source, output, volume_bound, stats_file):
+    """Serial TetGen (`cgmesh tetgen`) on a case's input with an absolute volume bound."""
+    command = [cgmesh, "tetgen", source, output, "--max-volume", repr(volume_bound),
+               "--stats", stats_file]
+    if case["regionArray"]:
+        command += ["--region-array", case["regionArray"]]
+    return command
