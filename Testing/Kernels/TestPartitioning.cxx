@@ -1,13 +1,17 @@
 // METIS partitioning, flat and hierarchical: every tet in a partition, every partition used, the
 // same result on every call, and without contiguity as with it. The Hilbert curve: a path through
-// every grid cell once, each step to a face neighbour; its partitions: equal runs.
+// every grid cell once, each step to a face neighbour; its partitions: equal runs. Box partitions
+// of the improvement sweeps: every tet in one box (or settled) in the order a serial pass gives,
+// whatever the schedule, and a box graph holding every pair of boxes that share a point.
 #include "CubeGenerator.h"
+#include "Partitioning/BoxPartitions.h"
 #include "Partitioning/HilbertPartitioner.h"
 #include "Partitioning/MeshPartitioner.h"
 #include "TestHarness.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
@@ -116,6 +120,157 @@ void test_hilbert_partitions_are_equal_runs()
   CHECK(!partitionAlongHilbertCurve(mesh, 0, partitionOfCell).ok());
 }
 
+// Runs the calls last to first: a result that depended on the schedule would differ.
+Status runBackwards(std::int64_t count, const std::function<void(std::int64_t)>& body)
+{
+  for (std::int64_t i = count - 1; i >= 0; --i)
+  {
+    body(i);
+  }
+  return Status::success();
+}
+
+// A Kuhn cube with its interior points moved off the grid, cut into Hilbert partitions.
+std::vector<PartitionMesh> jitteredCubePartitions(int n, int partitions, TetMesh& mesh)
+{
+  generateKuhnCube(n, mesh);
+  const double h = 1.0 / n;
+  for (std::size_t i = 0; i < mesh.coordinates.size(); ++i)
+  {
+    const double x = mesh.coordinates[i];
+    if (x > 0.5 * h && x < 1 - 0.5 * h)
+    {
+      mesh.coordinates[i] += 0.3 * h * std::sin(12.9898 * static_cast<double>(i));
+    }
+  }
+  std::vector<int> partitionOf;
+  partitionAlongHilbertCurve(mesh, partitions, partitionOf);
+  std::vector<PartitionMesh> parts(partitions);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    parts[partitionOf[t]].tets.push_back(mesh.tets[t]);
+    parts[partitionOf[t]].parentCells.push_back(static_cast<CellId>(t));
+    parts[partitionOf[t]].regions.push_back(static_cast<int>(t % 3));
+  }
+  return parts;
+}
+
+void test_box_regrouping_keeps_every_tet_in_serial_order()
+{
+  TetMesh mesh;
+  const std::vector<PartitionMesh> partitions = jitteredCubePartitions(10, 37, mesh);
+  std::vector<char> flagged(mesh.numberOfPoints(), 0);
+  for (std::size_t p = 0; p < flagged.size(); p += 7)
+  {
+    flagged[p] = 1;
+  }
+  for (double shift : { 0.0, 0.5 })
+  {
+    const BoxLayout layout = layBoxes(mesh.coordinates, 3, shift);
+    CHECK_EQUAL(layout.numberOfBoxes(), std::size_t{ 64 });
+    // What a serial pass gives: partitions in order, tets in order.
+    std::vector<PartitionMesh> expectedBoxes(layout.numberOfBoxes());
+    PartitionMesh expectedSettled;
+    for (const PartitionMesh& partition : partitions)
+    {
+      for (std::size_t t = 0; t < partition.tets.size(); ++t)
+      {
+        appendTetOf(partition, t,
+          touchesFlaggedPoint(partition.tets[t], flagged)
+            ? expectedBoxes[layout.boxOf(partition.tets[t], mesh.coordinates)]
+            : expectedSettled);
+      }
+    }
+    for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
+    {
+      std::vector<PartitionMesh> moved = partitions, boxes;
+      PartitionMesh settled;
+      CHECK(
+        regroupIntoBoxes(moved, mesh.coordinates, layout, parallelFor, boxes, &flagged, &settled)
+          .ok());
+      CHECK_EQUAL(boxes.size(), expectedBoxes.size());
+      for (std::size_t b = 0; b < std::min(boxes.size(), expectedBoxes.size()); ++b)
+      {
+        CHECK(boxes[b].tets == expectedBoxes[b].tets);
+        CHECK(boxes[b].parentCells == expectedBoxes[b].parentCells);
+        CHECK(boxes[b].regions == expectedBoxes[b].regions);
+      }
+      CHECK(settled.tets == expectedSettled.tets);
+      CHECK(settled.regions == expectedSettled.regions);
+      CHECK(std::all_of(moved.begin(), moved.end(),
+        [](const PartitionMesh& partition) { return partition.tets.empty(); }));
+      // Without flags every tet goes to a box and `settled` is left alone.
+      std::vector<PartitionMesh> again = partitions, allBoxes;
+      CHECK(
+        regroupIntoBoxes(again, mesh.coordinates, layout, parallelFor, allBoxes, nullptr, &settled)
+          .ok());
+      std::size_t total = 0;
+      for (const PartitionMesh& box : allBoxes)
+      {
+        total += box.tets.size();
+      }
+      CHECK_EQUAL(total, mesh.tets.size());
+      CHECK(settled.tets == expectedSettled.tets);
+    }
+  }
+}
+
+// Every pair of boxes sharing a point is an edge of the box graph; rows sorted and symmetric.
+void checkHoldsExactGraph(
+  const std::vector<PartitionMesh>& boxes, const TetMesh& mesh, const PartitionGraph& graph)
+{
+  std::vector<Tet> tets;
+  std::vector<int> boxOf;
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+  {
+    tets.insert(tets.end(), boxes[b].tets.begin(), boxes[b].tets.end());
+    boxOf.insert(boxOf.end(), boxes[b].tets.size(), static_cast<int>(b));
+  }
+  const PartitionGraph exact =
+    buildPartitionGraph(tets, boxOf, static_cast<int>(boxes.size()), mesh.numberOfPoints());
+  CHECK_EQUAL(graph.numberOfPartitions, exact.numberOfPartitions);
+  for (int b = 0; b < std::min(graph.numberOfPartitions, exact.numberOfPartitions); ++b)
+  {
+    const int* row = graph.neighboursOf(b);
+    CHECK(std::is_sorted(row, row + graph.degree(b)));
+    for (int k = 0; k < exact.degree(b); ++k)
+    {
+      CHECK(std::binary_search(row, row + graph.degree(b), exact.neighboursOf(b)[k]));
+    }
+    for (int k = 0; k < graph.degree(b); ++k)
+    {
+      const int other = row[k];
+      CHECK(other != b);
+      CHECK(std::binary_search(
+        graph.neighboursOf(other), graph.neighboursOf(other) + graph.degree(other), b));
+    }
+  }
+}
+
+void test_box_graph_holds_every_shared_point()
+{
+  TetMesh mesh;
+  // 4 boxes per axis over a 12-cube: tets reach into the next box only.
+  std::vector<PartitionMesh> partitions = jitteredCubePartitions(12, 10, mesh), boxes;
+  const BoxLayout fine = layBoxes(mesh.coordinates, 4, 0.5);
+  CHECK(regroupIntoBoxes(partitions, mesh.coordinates, fine, runSerially, boxes).ok());
+  PartitionGraph graph, backwards;
+  CHECK(buildBoxGraph(boxes, mesh.coordinates, fine, runSerially, graph).ok());
+  CHECK(buildBoxGraph(boxes, mesh.coordinates, fine, runBackwards, backwards).ok());
+  CHECK(graph.offsets == backwards.offsets && graph.neighbours == backwards.neighbours);
+  CHECK(graph.numberOfEdges() > 0);
+  checkHoldsExactGraph(boxes, mesh, graph);
+
+  // 30 boxes per axis over a 2-cube: tets reach over many boxes, and the exact graph is used.
+  TetMesh coarse;
+  std::vector<PartitionMesh> coarseParts = jitteredCubePartitions(2, 3, coarse), coarseBoxes;
+  const BoxLayout dense = layBoxes(coarse.coordinates, 30, 0.0);
+  CHECK(regroupIntoBoxes(coarseParts, coarse.coordinates, dense, runSerially, coarseBoxes).ok());
+  PartitionGraph coarseGraph;
+  CHECK(buildBoxGraph(coarseBoxes, coarse.coordinates, dense, runSerially, coarseGraph).ok());
+  checkHoldsExactGraph(coarseBoxes, coarse, coarseGraph);
+}
+
 } // namespace
 
 int main()
@@ -123,5 +278,7 @@ int main()
   test_flat_and_hierarchical();
   test_hilbert_curve_visits_every_cell_through_faces();
   test_hilbert_partitions_are_equal_runs();
+  test_box_regrouping_keeps_every_tet_in_serial_order();
+  test_box_graph_holds_every_shared_point();
   return cgmesh_test::finish("TestPartitioning");
 }

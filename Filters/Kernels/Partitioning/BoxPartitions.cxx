@@ -1,0 +1,395 @@
+#include "Partitioning/BoxPartitions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace cgmesh
+{
+
+std::size_t BoxLayout::numberOfBoxes() const
+{
+  const std::size_t n = static_cast<std::size_t>(this->boxesPerAxis());
+  return n * n * n;
+}
+
+std::array<int, 3> BoxLayout::indexOf(const double* point) const
+{
+  std::array<int, 3> index;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    index[axis] = std::max(0,
+      std::min(this->cells,
+        static_cast<int>(std::floor((point[axis] - this->low[axis]) / this->size[axis]))));
+  }
+  return index;
+}
+
+std::size_t BoxLayout::boxAt(const std::array<int, 3>& index) const
+{
+  const std::size_t n = static_cast<std::size_t>(this->boxesPerAxis());
+  return (static_cast<std::size_t>(index[2]) * n + static_cast<std::size_t>(index[1])) * n +
+    static_cast<std::size_t>(index[0]);
+}
+
+std::size_t BoxLayout::boxOf(const Tet& tet, const std::vector<double>& coordinates) const
+{
+  double centroid[3] = { 0, 0, 0 };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (PointId p : tet)
+    {
+      centroid[axis] += 0.25 * coordinates[3 * p + axis];
+    }
+  }
+  return this->boxAt(this->indexOf(centroid));
+}
+
+BoxLayout layBoxes(const std::vector<double>& coordinates, int cells, double shift)
+{
+  BoxLayout layout;
+  layout.cells = std::max(1, cells);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    double lowest = std::numeric_limits<double>::max(), highest = -lowest;
+    for (std::size_t p = axis; p < coordinates.size(); p += 3)
+    {
+      lowest = std::min(lowest, coordinates[p]);
+      highest = std::max(highest, coordinates[p]);
+    }
+    layout.size[axis] = highest > lowest ? (highest - lowest) / layout.cells : 1.0;
+    layout.low[axis] = lowest - shift * layout.size[axis];
+  }
+  return layout;
+}
+
+namespace
+{
+
+// A partition's tets for the boxes, sorted by (box, tet) as (box << 32 | tet) keys, with the runs
+// of one box among them; and how many tets of the partition stay behind.
+struct MovingTets
+{
+  std::vector<std::uint64_t> keys;
+  struct Run
+  {
+    std::size_t box;
+    std::size_t begin, end; // in keys
+  };
+  std::vector<Run> runs;
+  std::size_t settled = 0;
+};
+
+bool staysBehind(const Tet& tet, const std::vector<char>* settledUnlessFlagged)
+{
+  return settledUnlessFlagged && !touchesFlaggedPoint(tet, *settledUnlessFlagged);
+}
+
+MovingTets sortMovingTets(const PartitionMesh& partition, const std::vector<double>& coordinates,
+  const BoxLayout& layout, const std::vector<char>* settledUnlessFlagged)
+{
+  MovingTets moving;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    const Tet& tet = partition.tets[t];
+    if (staysBehind(tet, settledUnlessFlagged))
+    {
+      ++moving.settled;
+    }
+    else
+    {
+      moving.keys.push_back((static_cast<std::uint64_t>(layout.boxOf(tet, coordinates)) << 32) | t);
+    }
+  }
+  std::sort(moving.keys.begin(), moving.keys.end());
+  for (std::size_t i = 0; i < moving.keys.size(); ++i)
+  {
+    const std::size_t box = static_cast<std::size_t>(moving.keys[i] >> 32);
+    if (moving.runs.empty() || moving.runs.back().box != box)
+    {
+      moving.runs.push_back({ box, i, i });
+    }
+    moving.runs.back().end = i + 1;
+  }
+  return moving;
+}
+
+std::size_t tetOfKey(std::uint64_t key)
+{
+  return static_cast<std::size_t>(key & 0xffffffffu);
+}
+
+// Copies tet `t` of `from` to position `at` of `to`, which is sized for it.
+void copyTetTo(const PartitionMesh& from, std::size_t t, PartitionMesh& to, std::size_t at)
+{
+  to.tets[at] = from.tets[t];
+  to.parentCells[at] = from.parentCells[t];
+  if (!from.regions.empty())
+  {
+    to.regions[at] = from.regions[t];
+  }
+}
+
+void resizeMesh(PartitionMesh& mesh, std::size_t tets, bool withRegions)
+{
+  mesh.tets.resize(tets);
+  mesh.parentCells.resize(tets);
+  mesh.regions.resize(withRegions ? tets : 0);
+}
+
+} // namespace
+
+Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
+  const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
+  std::vector<PartitionMesh>& boxes, const std::vector<char>* settledUnlessFlagged,
+  PartitionMesh* settled)
+{
+  if (!settled || !settledUnlessFlagged)
+  {
+    settled = nullptr; // every tet goes to a box
+    settledUnlessFlagged = nullptr;
+  }
+  if (std::any_of(partitions.begin(), partitions.end(),
+        [](const PartitionMesh& partition) { return partition.tets.size() >> 32 != 0; }))
+  {
+    return Status::failure(
+      ErrorKind::SizeLimit, "a partition of 2^32 tets or more cannot be regrouped into boxes");
+  }
+  const bool withRegions = std::any_of(partitions.begin(), partitions.end(),
+    [](const PartitionMesh& partition) { return !partition.regions.empty(); });
+  const std::int64_t partitionCount = static_cast<std::int64_t>(partitions.size());
+  std::vector<MovingTets> moving(partitions.size());
+  Status status = parallelFor(partitionCount,
+    [&](std::int64_t p)
+    { moving[p] = sortMovingTets(partitions[p], coordinates, layout, settledUnlessFlagged); });
+  if (!status.ok())
+  {
+    return status;
+  }
+
+  // Per box, the runs that go there, in partition order: counted, then filled (compressed rows).
+  struct Source
+  {
+    int partition;
+    std::size_t run;
+  };
+  const std::size_t boxCount = layout.numberOfBoxes();
+  std::vector<std::size_t> firstSource(boxCount + 1, 0), boxSize(boxCount, 0);
+  std::vector<std::size_t> firstSettled(partitions.size() + 1, 0);
+  for (std::size_t p = 0; p < moving.size(); ++p)
+  {
+    for (const MovingTets::Run& run : moving[p].runs)
+    {
+      ++firstSource[run.box + 1];
+      boxSize[run.box] += run.end - run.begin;
+    }
+    firstSettled[p + 1] = firstSettled[p] + moving[p].settled;
+  }
+  for (std::size_t b = 0; b < boxCount; ++b)
+  {
+    firstSource[b + 1] += firstSource[b];
+  }
+  std::vector<Source> sources(firstSource.back());
+  {
+    std::vector<std::size_t> next(firstSource.begin(), firstSource.end() - 1);
+    for (std::size_t p = 0; p < moving.size(); ++p)
+    {
+      for (std::size_t r = 0; r < moving[p].runs.size(); ++r)
+      {
+        sources[next[moving[p].runs[r].box]++] = { static_cast<int>(p), r };
+      }
+    }
+  }
+
+  boxes.assign(boxCount, PartitionMesh());
+  status = parallelFor(static_cast<std::int64_t>(boxCount),
+    [&](std::int64_t b)
+    {
+      PartitionMesh& box = boxes[b];
+      resizeMesh(box, boxSize[b], withRegions);
+      std::size_t at = 0;
+      for (std::size_t s = firstSource[b]; s < firstSource[b + 1]; ++s)
+      {
+        const MovingTets& tetsOfSource = moving[sources[s].partition];
+        const MovingTets::Run& run = tetsOfSource.runs[sources[s].run];
+        for (std::size_t i = run.begin; i < run.end; ++i)
+        {
+          copyTetTo(partitions[sources[s].partition], tetOfKey(tetsOfSource.keys[i]), box, at++);
+        }
+      }
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+  if (settled)
+  {
+    *settled = PartitionMesh();
+    resizeMesh(*settled, firstSettled.back(), withRegions);
+  }
+  return parallelFor(partitionCount,
+    [&](std::int64_t p)
+    {
+      const PartitionMesh& partition = partitions[p];
+      std::size_t at = firstSettled[p];
+      for (std::size_t t = 0; t < partition.tets.size() && at < firstSettled[p + 1]; ++t)
+      {
+        if (staysBehind(partition.tets[t], settledUnlessFlagged))
+        {
+          copyTetTo(partition, t, *settled, at++);
+        }
+      }
+      partitions[p] = PartitionMesh();
+      moving[p] = MovingTets();
+    });
+}
+
+namespace
+{
+
+// The axis-aligned bounding box of a box's tet corners; empty when the box has no tet.
+struct CornerBounds
+{
+  double low[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max() };
+  double high[3] = { -std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+    -std::numeric_limits<double>::max() };
+  bool empty() const { return this->low[0] > this->high[0]; }
+  bool meets(const CornerBounds& other) const
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (this->high[axis] < other.low[axis] || other.high[axis] < this->low[axis])
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
+// How many boxes beyond its own box `bounds` reaches along any axis.
+int reachInBoxes(
+  const CornerBounds& bounds, const std::array<int, 3>& index, const BoxLayout& layout)
+{
+  int reach = 0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double boxLow = layout.low[axis] + index[axis] * layout.size[axis];
+    const double below = (boxLow - bounds.low[axis]) / layout.size[axis];
+    const double above = (bounds.high[axis] - boxLow) / layout.size[axis] - 1.0;
+    reach = std::max(reach, static_cast<int>(std::ceil(std::max({ below, above, 0.0 }))));
+  }
+  return reach;
+}
+
+PartitionGraph exactGraph(const std::vector<PartitionMesh>& boxes, PointId points)
+{
+  std::vector<Tet> tets;
+  std::vector<int> boxOfTet;
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+  {
+    tets.insert(tets.end(), boxes[b].tets.begin(), boxes[b].tets.end());
+    boxOfTet.insert(boxOfTet.end(), boxes[b].tets.size(), static_cast<int>(b));
+  }
+  return buildPartitionGraph(tets, boxOfTet, static_cast<int>(boxes.size()), points);
+}
+
+} // namespace
+
+Status buildBoxGraph(const std::vector<PartitionMesh>& boxes,
+  const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
+  PartitionGraph& graph)
+{
+  const std::int64_t boxCount = static_cast<std::int64_t>(boxes.size());
+  std::vector<CornerBounds> bounds(boxes.size());
+  std::vector<int> reach(boxes.size(), 0);
+  const int n = layout.boxesPerAxis();
+  auto indexOfBox = [n](std::int64_t b)
+  {
+    return std::array<int, 3>{ static_cast<int>(b % n), static_cast<int>(b / n % n),
+      static_cast<int>(b / n / n) };
+  };
+  Status status = parallelFor(boxCount,
+    [&](std::int64_t b)
+    {
+      CornerBounds& box = bounds[b];
+      for (const Tet& tet : boxes[b].tets)
+      {
+        for (PointId p : tet)
+        {
+          for (int axis = 0; axis < 3; ++axis)
+          {
+            box.low[axis] = std::min(box.low[axis], coordinates[3 * p + axis]);
+            box.high[axis] = std::max(box.high[axis], coordinates[3 * p + axis]);
+          }
+        }
+      }
+      reach[b] = box.empty() ? 0 : reachInBoxes(box, indexOfBox(b), layout);
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+  const int farthest = reach.empty() ? 0 : *std::max_element(reach.begin(), reach.end());
+  if (farthest > 3)
+  {
+    graph = exactGraph(boxes, static_cast<PointId>(coordinates.size() / 3));
+    return Status::success();
+  }
+
+  // Corners' bounds reach `farthest` boxes beyond their own box at most, so two that meet lie at
+  // most 2 * farthest + 1 boxes apart along every axis.
+  std::vector<std::vector<int>> rows(boxes.size());
+  status = parallelFor(boxCount,
+    [&](std::int64_t b)
+    {
+      if (bounds[b].empty())
+      {
+        return;
+      }
+      const std::array<int, 3> at = indexOfBox(b);
+      const int span = 2 * farthest + 1;
+      std::array<int, 3> from, to;
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        from[axis] = std::max(0, at[axis] - span);
+        to[axis] = std::min(n - 1, at[axis] + span);
+      }
+      for (int z = from[2]; z <= to[2]; ++z)
+      {
+        for (int y = from[1]; y <= to[1]; ++y)
+        {
+          for (int x = from[0]; x <= to[0]; ++x)
+          {
+            const std::size_t other = layout.boxAt({ x, y, z });
+            if (static_cast<std::int64_t>(other) != b && !bounds[other].empty() &&
+              bounds[b].meets(bounds[other]))
+            {
+              rows[b].push_back(static_cast<int>(other)); // ascending: x fastest
+            }
+          }
+        }
+      }
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+  graph = PartitionGraph();
+  graph.numberOfPartitions = static_cast<int>(boxes.size());
+  graph.offsets.assign(boxes.size() + 1, 0);
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+  {
+    graph.offsets[b + 1] = graph.offsets[b] + static_cast<std::int64_t>(rows[b].size());
+  }
+  graph.neighbours.reserve(static_cast<std::size_t>(graph.offsets.back()));
+  for (const std::vector<int>& row : rows)
+  {
+    graph.neighbours.insert(graph.neighbours.end(), row.begin(), row.end());
+  }
+  return Status::success();
+}
+
+} // namespace cgmesh

@@ -1,0 +1,61 @@
+// Box partitions for the improvement sweeps: a grid of boxes over the mesh's bounding box, each tet
+// in the box of its centroid, and the graph of the boxes. Regrouping and the graph run on a
+// ParallelFor and give the same result for any schedule: a box holds its tets in (source
+// partition, tet) order, as a serial pass would put them.
+#ifndef cgmesh_BoxPartitions_h
+#define cgmesh_BoxPartitions_h
+
+#include "Core/PartitionMesh.h"
+#include "Core/Status.h"
+#include "Core/Tasks.h"
+#include "Partitioning/PartitionGraph.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace cgmesh
+{
+
+struct BoxLayout
+{
+  int cells = 1;       // boxes along each axis of the bounding box
+  double low[3] = {};  // the corner of box (0, 0, 0)
+  double size[3] = {}; // a box's edge lengths
+  // One box more per axis than `cells`: a layout shifted by a fraction of a box needs it at the
+  // far ends.
+  int boxesPerAxis() const { return this->cells + 1; }
+  std::size_t numberOfBoxes() const;
+  // The grid index, per axis, of the box holding `point` (clamped to the grid).
+  std::array<int, 3> indexOf(const double* point) const;
+  // Box number of a grid index: x fastest.
+  std::size_t boxAt(const std::array<int, 3>& index) const;
+  // The box of the tet's centroid.
+  std::size_t boxOf(const Tet& tet, const std::vector<double>& coordinates) const;
+};
+
+// `cells` boxes per axis over the bounding box of `coordinates`, moved back by `shift` boxes (0:
+// from the bounding box's corner; 0.5: by half a box, so that the first layout's box faces lie
+// inside boxes).
+BoxLayout layBoxes(const std::vector<double>& coordinates, int cells, double shift);
+
+// Moves the tets of `partitions` into the boxes of `layout` (`boxes`) and empties the partitions.
+// With `settledUnlessFlagged`, the tets that touch no flagged point go to `*settled` instead, in
+// (partition, tet) order.
+Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
+  const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
+  std::vector<PartitionMesh>& boxes, const std::vector<char>* settledUnlessFlagged = nullptr,
+  PartitionMesh* settled = nullptr);
+
+// The boxes' partition graph, for colouring: two boxes are neighbours when the bounding boxes of
+// their tets' corners meet. Boxes that share a point always do, so the graph holds every edge of
+// the exact one (buildPartitionGraph), possibly more: any colouring of it keeps same-coloured
+// boxes vertex-disjoint. Linear in the tets; when a box's tets reach further than 3 boxes beyond
+// it (a mesh coarse for its layout) it falls back to the exact graph.
+Status buildBoxGraph(const std::vector<PartitionMesh>& boxes,
+  const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
+  PartitionGraph& graph);
+
+} // namespace cgmesh
+
+#endif
