@@ -132,7 +132,8 @@ public:
    * EdgesWithinSizeBounds and EdgeSizeRatioHistogram in the output. RefinementRegions ("2,5":
    * region ids) and RefinementBox ("x0,y0,z0,x1,y1,z1"): refine only there (empty: everywhere).
    * Delaunay: MaximumVolume (0: unused) or VolumeFactor (0.1), RadiusEdgeRatio (2, at least 1).
-   * ImproveQuality (on) and NumberOfImprovementPasses (2, in [0, 20]).
+   * ImproveQuality (on), ImproveInput (on; Template: improve the input before refining it too)
+   * and NumberOfImprovementPasses (2, in [0, 20]).
    * NumberOfThreads (0: all cores; the output does not depend on it).
    * MaximumNumberOfCells (100000000; 0: no limit): the size guard.
    * Diagnostics (off): also the text and possibly empty field data (names, fallback partitions).
@@ -158,6 +159,7 @@ public:
   cgmeshParameterMacro(VolumeFactor, double);
   cgmeshParameterMacro(RadiusEdgeRatio, double);
   cgmeshBooleanParameterMacro(ImproveQuality);
+  cgmeshBooleanParameterMacro(ImproveInput);
   cgmeshParameterMacro(NumberOfImprovementPasses, int);
   cgmeshParameterMacro(NumberOfThreads, int);
   cgmeshParameterMacro(MaximumNumberOfCells, vtkIdType);

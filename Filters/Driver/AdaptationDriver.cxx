@@ -4,6 +4,7 @@
 #include "Coloring/ColoringSupport.h"
 #include "Coloring/PartitionColoring.h"
 #include "ImprovementSweep.h"
+#include "InputImprovement.h"
 #include "ParallelFor.h"
 #include "Partitioning/HilbertPartitioner.h"
 #include "Partitioning/MeshPartitioner.h"
@@ -103,15 +104,7 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   {
     return status;
   }
-  summary.numberOfColors = countColors(summary.colorOfPartition);
-  summary.partitionsPerColor = colorSizes(summary.colorOfPartition, summary.numberOfColors);
-  if (summary.numberOfColors > 0)
-  {
-    const double mean = static_cast<double>(plan.partitions) / summary.numberOfColors;
-    summary.colorBalance =
-      *std::max_element(summary.partitionsPerColor.begin(), summary.partitionsPerColor.end()) /
-      mean;
-  }
+  summarizeColoring(summary);
   reporter.progress(Stage::Partition, 1.0);
   return Status::success();
 }
@@ -217,6 +210,7 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
   AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter,
   std::vector<char>& formerInterface)
 {
+  const std::int64_t poorBefore = summary.poorTets;
   Status status = runColorLoop(setup, options, state, summary, reporter);
   if (!status.ok() || summary.aborted)
   {
@@ -228,8 +222,16 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
   {
     return status;
   }
+  if (setup.improve && summary.poorTets == poorBefore && !setup.improvement.coarsen)
+  {
+    return status; // improvement in partitions saw no poor tet: no seam to work on
+  }
+  ColorLoopSetup sweeps = setup;
+  sweeps.stage = Stage::Sweep;
+  sweeps.progressStart = 0;
+  sweeps.progressEnd = 1;
   return improveAcrossFormerInterfaces(
-    setup, options, summary.plan.boxesPerAxis, formerInterface, state, summary, reporter);
+    sweeps, options, summary.plan.boxesPerAxis, formerInterface, state, summary, reporter);
 }
 
 Status runPipeline(const TetMesh& input, const AdaptationOptions& options, AdaptationResult& result,
@@ -259,6 +261,14 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   if (options.method == RefinementMethod::Delaunay)
   {
     attachTetGen(options, setup, summary, tetgenWorkers, serialTetGen);
+  }
+  if (improvesInputFirst(options, summary.plan))
+  {
+    status = improveInputFirst(options, partitionOfCell, graph, setup, state, summary, reporter);
+    if (!status.ok() || summary.aborted)
+    {
+      return status;
+    }
   }
   std::vector<char> formerInterface;
   status = refineAndImprove(options, setup, state, summary, reporter, formerInterface);

@@ -61,6 +61,7 @@ struct AdaptationOptions
   double volumeFactor{};
   double radiusEdgeRatio{};
   bool improveQuality{};
+  bool improveInput{}; // template: improve the input before refining it (InputImprovement.h)
   int improvementPasses{};
   int numberOfThreads{};
   std::int64_t maximumNumberOfCells{};
@@ -182,6 +183,12 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "improve the tets after refinement (edge removal, face swaps, guarded smoothing), then "
       "again over box partitions across the former interfaces; --no-improve skips it",
       &O::improveQuality },
+    { "ImproveInput", "--no-improve-input", "", K::Boolean, 0, 1, 1, "", S::Template,
+      "with ImproveQuality: improve the input's tets before refining them, as the refined ones "
+      "are; children keep their parent's shape, so this does the work on an eighth of the tets "
+      "per pass. Not with RefinementRegions or RefinementBox, which leave the other tets as they "
+      "are; --no-improve-input improves only after refinement",
+      &O::improveInput },
     { "NumberOfImprovementPasses", "--improve-passes", "N", K::Integer, 0, 20, 2, "", S::Any,
       "passes of edge removal, face swaps and smoothing per partition in each sweep",
       &O::improvementPasses },

@@ -1,5 +1,6 @@
 #include "ColorLoop.h"
 
+#include "Coloring/ColoringSupport.h"
 #include "Coloring/PartitionColoring.h"
 #include "Core/Geometry.h"
 #include "Core/Stopwatch.h"
@@ -332,6 +333,21 @@ Status colorPartitions(const PartitionGraph& graph, const std::string& coloringN
         "' gave two adjacent partitions the same colour");
   }
   return status;
+}
+
+void summarizeColoring(AdaptationSummary& summary)
+{
+  summary.numberOfColors = countColors(summary.colorOfPartition);
+  summary.partitionsPerColor = colorSizes(summary.colorOfPartition, summary.numberOfColors);
+  summary.colorBalance = 0;
+  if (summary.numberOfColors > 0)
+  {
+    const double mean =
+      static_cast<double>(summary.colorOfPartition.size()) / summary.numberOfColors;
+    summary.colorBalance =
+      *std::max_element(summary.partitionsPerColor.begin(), summary.partitionsPerColor.end()) /
+      mean;
+  }
 }
 
 Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& options,

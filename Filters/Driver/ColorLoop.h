@@ -64,6 +64,9 @@ struct ColorLoopSetup
 Status colorPartitions(const PartitionGraph& graph, const std::string& coloringName, int threads,
   std::vector<int>& colorOfPartition);
 
+// The summary's colour count, populations and balance, from summary.colorOfPartition.
+void summarizeColoring(AdaptationSummary& summary);
+
 // Runs all iterations. Sets summary.aborted (and returns success) when options.abortRequested
 // says so between two colours. Time goes to the heal, adapt, improve and post phases.
 Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& options,

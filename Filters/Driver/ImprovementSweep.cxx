@@ -4,77 +4,122 @@
 #include "ParallelFor.h"
 #include "Partitioning/BoxPartitions.h"
 
+#include <iterator>
+
 namespace cgmesh
 {
 namespace
 {
 
+// Flags the corners of the tets the sweep works on: those that touch a former interface vertex
+// and need improvement (poor, or short-edged when coarsening). Every operation stays among the
+// tets that share a vertex with them, so only those go into boxes. Returns how many were found.
+std::int64_t flagCornersOfWork(const ColorLoopSetup& setup,
+  const std::vector<char>& formerInterface, AdaptationState& state, std::vector<char>& flagged,
+  Status& status)
+{
+  std::vector<double> noProvisionalPoints, noProvisionalSizes;
+  PartitionPoints points{ &state.coordinates, &noProvisionalPoints };
+  if (setup.sizeField)
+  {
+    points.globalSizes = &state.sizes;
+    points.provisionalSizes = &noProvisionalSizes;
+  }
+  std::vector<std::vector<PointId>> corners(state.partitions.size());
+  status = runParallel(setup.threads, static_cast<std::int64_t>(state.partitions.size()),
+    [&](std::int64_t p)
+    {
+      for (const Tet& tet : state.partitions[p].tets)
+      {
+        if (touchesFlaggedPoint(tet, formerInterface) &&
+          needsImprovement(tet, points, setup.improvement))
+        {
+          corners[p].insert(corners[p].end(), tet.begin(), tet.end());
+        }
+      }
+    });
+  flagged.assign(state.coordinates.size() / 3, 0);
+  std::int64_t found = 0;
+  for (const std::vector<PointId>& list : corners)
+  {
+    found += static_cast<std::int64_t>(list.size() / 4);
+    for (PointId p : list)
+    {
+      flagged[p] = 1;
+    }
+  }
+  return found;
+}
+
 // One improvement sweep over box partitions; `sweepIndex` 0 lays the boxes from the bounding
-// box's corner, 1 shifts them by half a box. With `formerInterface` (the first sweep), the tets
-// that touch no flagged vertex go to `settled` instead: the sweeps have nothing to do there
-// (refinement already improved them, or TetGen met its bound), and leaving them out halves what
-// the sweeps build.
-Status improveOverBoxes(const ColorLoopSetup& refinementSetup, const AdaptationOptions& options,
-  int cells, int sweepIndex, const std::vector<char>* formerInterface, PartitionMesh& settled,
-  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
+// box's corner, 1 shifts them by half a box. Only the tets that share a vertex with a tet to work
+// on move into the boxes; the others stay in their partitions, which follow the boxes.
+Status improveOverBoxes(const ColorLoopSetup& setup, const AdaptationOptions& options, int cells,
+  int sweepIndex, const std::vector<char>& formerInterface, AdaptationState& state,
+  AdaptationSummary& summary, PhaseReporter& reporter)
 {
   reporter.enter(Phase::Improve);
-  const ParallelFor parallelFor = parallelForOn(refinementSetup.threads);
+  std::vector<char> cornersOfWork;
+  Status status = Status::success();
+  if (flagCornersOfWork(setup, formerInterface, state, cornersOfWork, status) == 0 || !status.ok())
+  {
+    return status; // nothing near a former interface needs work
+  }
+  const ParallelFor parallelFor = parallelForOn(setup.threads);
   const BoxLayout layout = layBoxes(state.coordinates, cells, 0.5 * sweepIndex);
   std::vector<PartitionMesh> boxes;
-  Status status = regroupIntoBoxes(
-    state.partitions, state.coordinates, layout, parallelFor, boxes, formerInterface, &settled);
+  status = regroupIntoBoxes(
+    state.partitions, state.coordinates, layout, parallelFor, boxes, &cornersOfWork);
   if (!status.ok())
   {
     return status;
   }
+  std::vector<PartitionMesh> staying = std::move(state.partitions);
   state.partitions = std::move(boxes);
   PartitionGraph graph;
   status = buildBoxGraph(state.partitions, state.coordinates, layout, parallelFor, graph);
   std::vector<int> colorOfBox;
   if (status.ok())
   {
-    status = colorPartitions(graph, options.coloring, refinementSetup.threads, colorOfBox);
+    status = colorPartitions(graph, options.coloring, setup.threads, colorOfBox);
   }
   if (!status.ok())
   {
     return status;
   }
-  ColorLoopSetup sweep = refinementSetup;
+  ColorLoopSetup sweep = setup;
   sweep.graph = &graph;
   sweep.colorOfPartition = &colorOfBox;
   sweep.numberOfColors = countColors(colorOfBox);
   sweep.numberOfIterations = 1;
   sweep.refine = false;
   sweep.improve = true;
-  sweep.stage = Stage::Sweep;
-  sweep.progressStart = 0.5 * sweepIndex;
-  sweep.progressEnd = 0.5 * (sweepIndex + 1);
-  return runColorLoop(sweep, options, state, summary, reporter);
+  const double half = 0.5 * (setup.progressEnd - setup.progressStart);
+  sweep.progressStart = setup.progressStart + half * sweepIndex;
+  sweep.progressEnd = sweep.progressStart + half;
+  status = runColorLoop(sweep, options, state, summary, reporter);
+  std::copy_if(std::make_move_iterator(staying.begin()), std::make_move_iterator(staying.end()),
+    std::back_inserter(state.partitions),
+    [](const PartitionMesh& partition) { return !partition.tets.empty(); });
+  return status;
 }
 
 } // namespace
 
-Status improveAcrossFormerInterfaces(const ColorLoopSetup& refinementSetup,
-  const AdaptationOptions& options, int boxesPerAxis, const std::vector<char>& formerInterface,
-  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
+Status improveAcrossFormerInterfaces(const ColorLoopSetup& setup, const AdaptationOptions& options,
+  int boxesPerAxis, const std::vector<char>& formerInterface, AdaptationState& state,
+  AdaptationSummary& summary, PhaseReporter& reporter)
 {
-  if (refinementSetup.improve && summary.poorTets == 0 && !refinementSetup.improvement.coarsen)
-  {
-    return Status::success(); // improvement in partitions saw no poor tet: no seam to work on
-  }
   // Box faces freeze vertices in their turn: a second layout shifted by half a box frees them.
-  PartitionMesh settled;
   for (int sweepIndex = 0; sweepIndex < 2; ++sweepIndex)
   {
-    Status status = improveOverBoxes(refinementSetup, options, boxesPerAxis, sweepIndex,
-      sweepIndex == 0 ? &formerInterface : nullptr, settled, state, summary, reporter);
+    Status status = improveOverBoxes(
+      setup, options, boxesPerAxis, sweepIndex, formerInterface, state, summary, reporter);
     if (!status.ok() || summary.aborted)
     {
       return status;
     }
   }
-  state.partitions.push_back(std::move(settled));
   return Status::success();
 }
 

@@ -30,9 +30,10 @@ enum class Phase
 enum class Stage
 {
   Prepare,
-  Partition, // partitioning, graph and colouring
-  Refine,    // the colour loop over all iterations
-  Sweep,     // the improvement sweeps across former interfaces
+  Partition,    // partitioning, graph and colouring
+  ImproveInput, // improving the input before template refinement
+  Refine,       // the colour loop over all iterations
+  Sweep,        // the improvement sweeps across former interfaces
   Merge,
   Count
 };

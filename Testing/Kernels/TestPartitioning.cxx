@@ -2,7 +2,8 @@
 // same result on every call, and without contiguity as with it. The Hilbert curve: a path through
 // every grid cell once, each step to a face neighbour; its partitions: equal runs. Box partitions
 // of the improvement sweeps: every tet in one box (or settled) in the order a serial pass gives,
-// whatever the schedule, and a box graph holding every pair of boxes that share a point.
+// whatever the schedule, the others left in place, and a box graph holding every pair of boxes that
+// share a point.
 #include "CubeGenerator.h"
 #include "Partitioning/BoxPartitions.h"
 #include "Partitioning/HilbertPartitioner.h"
@@ -168,26 +169,24 @@ void test_box_regrouping_keeps_every_tet_in_serial_order()
   {
     const BoxLayout layout = layBoxes(mesh.coordinates, 3, shift);
     CHECK_EQUAL(layout.numberOfBoxes(), std::size_t{ 64 });
-    // What a serial pass gives: partitions in order, tets in order.
+    // What a serial pass gives: partitions in order, tets in order; the tets touching no flagged
+    // point stay in their partition, in order.
     std::vector<PartitionMesh> expectedBoxes(layout.numberOfBoxes());
-    PartitionMesh expectedSettled;
-    for (const PartitionMesh& partition : partitions)
+    std::vector<PartitionMesh> expectedStaying(partitions.size());
+    for (std::size_t p = 0; p < partitions.size(); ++p)
     {
-      for (std::size_t t = 0; t < partition.tets.size(); ++t)
+      for (std::size_t t = 0; t < partitions[p].tets.size(); ++t)
       {
-        appendTetOf(partition, t,
-          touchesFlaggedPoint(partition.tets[t], flagged)
-            ? expectedBoxes[layout.boxOf(partition.tets[t], mesh.coordinates)]
-            : expectedSettled);
+        const Tet& tet = partitions[p].tets[t];
+        appendTetOf(partitions[p], t,
+          touchesFlaggedPoint(tet, flagged) ? expectedBoxes[layout.boxOf(tet, mesh.coordinates)]
+                                            : expectedStaying[p]);
       }
     }
     for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
     {
-      std::vector<PartitionMesh> moved = partitions, boxes;
-      PartitionMesh settled;
-      CHECK(
-        regroupIntoBoxes(moved, mesh.coordinates, layout, parallelFor, boxes, &flagged, &settled)
-          .ok());
+      std::vector<PartitionMesh> staying = partitions, boxes;
+      CHECK(regroupIntoBoxes(staying, mesh.coordinates, layout, parallelFor, boxes, &flagged).ok());
       CHECK_EQUAL(boxes.size(), expectedBoxes.size());
       for (std::size_t b = 0; b < std::min(boxes.size(), expectedBoxes.size()); ++b)
       {
@@ -195,22 +194,23 @@ void test_box_regrouping_keeps_every_tet_in_serial_order()
         CHECK(boxes[b].parentCells == expectedBoxes[b].parentCells);
         CHECK(boxes[b].regions == expectedBoxes[b].regions);
       }
-      CHECK(settled.tets == expectedSettled.tets);
-      CHECK(settled.regions == expectedSettled.regions);
-      CHECK(std::all_of(moved.begin(), moved.end(),
-        [](const PartitionMesh& partition) { return partition.tets.empty(); }));
-      // Without flags every tet goes to a box and `settled` is left alone.
-      std::vector<PartitionMesh> again = partitions, allBoxes;
-      CHECK(
-        regroupIntoBoxes(again, mesh.coordinates, layout, parallelFor, allBoxes, nullptr, &settled)
-          .ok());
+      for (std::size_t p = 0; p < partitions.size(); ++p)
+      {
+        CHECK(staying[p].tets == expectedStaying[p].tets);
+        CHECK(staying[p].parentCells == expectedStaying[p].parentCells);
+        CHECK(staying[p].regions == expectedStaying[p].regions);
+      }
+      // Without flags every tet goes to a box and the partitions are emptied.
+      std::vector<PartitionMesh> emptied = partitions, allBoxes;
+      CHECK(regroupIntoBoxes(emptied, mesh.coordinates, layout, parallelFor, allBoxes).ok());
       std::size_t total = 0;
       for (const PartitionMesh& box : allBoxes)
       {
         total += box.tets.size();
       }
       CHECK_EQUAL(total, mesh.tets.size());
-      CHECK(settled.tets == expectedSettled.tets);
+      CHECK(std::all_of(emptied.begin(), emptied.end(),
+        [](const PartitionMesh& partition) { return partition.tets.empty(); }));
     }
   }
 }

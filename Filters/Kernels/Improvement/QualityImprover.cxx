@@ -658,7 +658,21 @@ bool hasShortEdge(const Tet& tet, const PartitionPoints& points)
   return false;
 }
 
+bool isPoor(const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters)
+{
+  return parameters.improve &&
+    meanRatioBelow(points.at(tet[0]), points.at(tet[1]), points.at(tet[2]), points.at(tet[3]),
+      parameters.targetQuality);
+}
+
 } // namespace improvement
+
+bool needsImprovement(
+  const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters)
+{
+  return improvement::isPoor(tet, points, parameters) ||
+    (parameters.coarsen && improvement::hasShortEdge(tet, points));
+}
 
 Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   const ImprovementParameters& parameters, ImprovementStatistics& statistics,
@@ -675,9 +689,7 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
-    const bool poor = parameters.improve &&
-      meanRatioBelow(points.at(tet[0]), points.at(tet[1]), points.at(tet[2]), points.at(tet[3]),
-        parameters.targetQuality);
+    const bool poor = improvement::isPoor(tet, points, parameters);
     poorTets += poor;
     worked[t] = poor || (parameters.coarsen && improvement::hasShortEdge(tet, points));
     workedTets += worked[t];

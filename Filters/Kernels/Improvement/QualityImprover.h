@@ -75,6 +75,12 @@ struct PartitionPoints
   }
 };
 
+// Whether improvePartition() works on `tet`: its mean ratio is below the target (with
+// `improve`), or an edge is shorter than the size field asks (with `coarsen`). The operations stay
+// among the tets that share a vertex with such a tet.
+bool needsImprovement(
+  const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters);
+
 // Improves `partition` in place; appends the ids of the vertices it moved to `movedPoints`.
 Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   const ImprovementParameters& parameters, ImprovementStatistics& statistics,

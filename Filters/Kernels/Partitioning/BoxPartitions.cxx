@@ -68,7 +68,7 @@ namespace
 {
 
 // A partition's tets for the boxes, sorted by (box, tet) as (box << 32 | tet) keys, with the runs
-// of one box among them; and how many tets of the partition stay behind.
+// of one box among them.
 struct MovingTets
 {
   std::vector<std::uint64_t> keys;
@@ -78,26 +78,21 @@ struct MovingTets
     std::size_t begin, end; // in keys
   };
   std::vector<Run> runs;
-  std::size_t settled = 0;
 };
 
-bool staysBehind(const Tet& tet, const std::vector<char>* settledUnlessFlagged)
+bool moves(const Tet& tet, const std::vector<char>* movingIfFlagged)
 {
-  return settledUnlessFlagged && !touchesFlaggedPoint(tet, *settledUnlessFlagged);
+  return !movingIfFlagged || touchesFlaggedPoint(tet, *movingIfFlagged);
 }
 
 MovingTets sortMovingTets(const PartitionMesh& partition, const std::vector<double>& coordinates,
-  const BoxLayout& layout, const std::vector<char>* settledUnlessFlagged)
+  const BoxLayout& layout, const std::vector<char>* movingIfFlagged)
 {
   MovingTets moving;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
-    if (staysBehind(tet, settledUnlessFlagged))
-    {
-      ++moving.settled;
-    }
-    else
+    if (moves(tet, movingIfFlagged))
     {
       moving.keys.push_back((static_cast<std::uint64_t>(layout.boxOf(tet, coordinates)) << 32) | t);
     }
@@ -138,18 +133,48 @@ void resizeMesh(PartitionMesh& mesh, std::size_t tets, bool withRegions)
   mesh.regions.resize(withRegions ? tets : 0);
 }
 
+// Keeps, in order and in place, the tets of `partition` that do not move.
+void keepStaying(PartitionMesh& partition, const MovingTets& moving)
+{
+  if (moving.keys.size() == partition.tets.size())
+  {
+    partition = PartitionMesh();
+    return;
+  }
+  std::vector<char> moved(partition.tets.size(), 0);
+  for (std::uint64_t key : moving.keys)
+  {
+    moved[tetOfKey(key)] = 1;
+  }
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    if (!moved[t])
+    {
+      partition.tets[kept] = partition.tets[t];
+      partition.parentCells[kept] = partition.parentCells[t];
+      if (!partition.regions.empty())
+      {
+        partition.regions[kept] = partition.regions[t];
+      }
+      ++kept;
+    }
+  }
+  resizeMesh(partition, kept, !partition.regions.empty());
+  if (2 * kept < partition.tets.capacity())
+  {
+    partition.tets.shrink_to_fit(); // most tets left: give their memory back
+    partition.parentCells.shrink_to_fit();
+    partition.regions.shrink_to_fit();
+  }
+}
+
 } // namespace
 
 Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
-  std::vector<PartitionMesh>& boxes, const std::vector<char>* settledUnlessFlagged,
-  PartitionMesh* settled)
+  std::vector<PartitionMesh>& boxes, const std::vector<char>* movingIfFlagged)
 {
-  if (!settled || !settledUnlessFlagged)
-  {
-    settled = nullptr; // every tet goes to a box
-    settledUnlessFlagged = nullptr;
-  }
   if (std::any_of(partitions.begin(), partitions.end(),
         [](const PartitionMesh& partition) { return partition.tets.size() >> 32 != 0; }))
   {
@@ -162,7 +187,7 @@ Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   std::vector<MovingTets> moving(partitions.size());
   Status status = parallelFor(partitionCount,
     [&](std::int64_t p)
-    { moving[p] = sortMovingTets(partitions[p], coordinates, layout, settledUnlessFlagged); });
+    { moving[p] = sortMovingTets(partitions[p], coordinates, layout, movingIfFlagged); });
   if (!status.ok())
   {
     return status;
@@ -176,7 +201,6 @@ Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   };
   const std::size_t boxCount = layout.numberOfBoxes();
   std::vector<std::size_t> firstSource(boxCount + 1, 0), boxSize(boxCount, 0);
-  std::vector<std::size_t> firstSettled(partitions.size() + 1, 0);
   for (std::size_t p = 0; p < moving.size(); ++p)
   {
     for (const MovingTets::Run& run : moving[p].runs)
@@ -184,7 +208,6 @@ Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
       ++firstSource[run.box + 1];
       boxSize[run.box] += run.end - run.begin;
     }
-    firstSettled[p + 1] = firstSettled[p] + moving[p].settled;
   }
   for (std::size_t b = 0; b < boxCount; ++b)
   {
@@ -223,24 +246,10 @@ Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   {
     return status;
   }
-  if (settled)
-  {
-    *settled = PartitionMesh();
-    resizeMesh(*settled, firstSettled.back(), withRegions);
-  }
   return parallelFor(partitionCount,
     [&](std::int64_t p)
     {
-      const PartitionMesh& partition = partitions[p];
-      std::size_t at = firstSettled[p];
-      for (std::size_t t = 0; t < partition.tets.size() && at < firstSettled[p + 1]; ++t)
-      {
-        if (staysBehind(partition.tets[t], settledUnlessFlagged))
-        {
-          copyTetTo(partition, t, *settled, at++);
-        }
-      }
-      partitions[p] = PartitionMesh();
+      keepStaying(partitions[p], moving[p]);
       moving[p] = MovingTets();
     });
 }

@@ -39,13 +39,12 @@ struct BoxLayout
 // inside boxes).
 BoxLayout layBoxes(const std::vector<double>& coordinates, int cells, double shift);
 
-// Moves the tets of `partitions` into the boxes of `layout` (`boxes`) and empties the partitions.
-// With `settledUnlessFlagged`, the tets that touch no flagged point go to `*settled` instead, in
-// (partition, tet) order.
+// Moves the tets of `partitions` into the boxes of `layout` (`boxes`). With `movingIfFlagged`,
+// only the tets that touch a flagged point move, and the others stay in their partition, in order
+// (nothing is allocated for them); without it every tet moves and the partitions are emptied.
 Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
-  std::vector<PartitionMesh>& boxes, const std::vector<char>* settledUnlessFlagged = nullptr,
-  PartitionMesh* settled = nullptr);
+  std::vector<PartitionMesh>& boxes, const std::vector<char>* movingIfFlagged = nullptr);
 
 // The boxes' partition graph, for colouring: two boxes are neighbours when the bounding boxes of
 // their tets' corners meet. Boxes that share a point always do, so the graph holds every edge of
