@@ -206,6 +206,7 @@ vtkSmartPointer<vtkUnstructuredGrid> runFilter(
   filter->SetPartitionByRegion(settings.partitionByRegion);
   filter->SetPartitionsPerRegion(settings.partitionsPerRegion);
   filter->SetImproveQuality(settings.improveQuality);
+  filter->SetImproveInput(settings.improveInput);
   filter->SetNumberOfImprovementPasses(settings.improvementPasses);
   filter->Update();
   vtkSmartPointer<vtkUnstructuredGrid> output = filter->GetOutput();

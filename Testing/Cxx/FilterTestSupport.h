@@ -48,6 +48,7 @@ struct FilterSettings
   bool partitionByRegion = false;
   int partitionsPerRegion = 1;
   bool improveQuality = true;
+  bool improveInput = true;
   int improvementPasses = 2;
 };
 
