@@ -369,10 +369,12 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
       break;
     }
     pointsAtLastPass = state.coordinates.size();
-    // Recomputed per iteration: the last one's splits made new interface points.
+    // Recomputed per iteration: the last one's splits made new interface points. Only refinement
+    // reads them (improvement freezes each partition's boundary itself).
     reporter.enter(setup.refine ? Phase::Heal : Phase::Improve);
-    const std::vector<char> interfaceVertex =
-      findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
+    const std::vector<char> interfaceVertex = setup.refine
+      ? findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3))
+      : std::vector<char>();
     IterationContext context{ setup, options, RefinementContext(),
       std::vector<PartitionRefinement>(state.partitions.size()) };
     context.refinement.coordinates = &state.coordinates;

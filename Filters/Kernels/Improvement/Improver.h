@@ -20,6 +20,11 @@ namespace improvement
 
 using Corners = std::array<int, 4>; // local vertex numbers
 
+// Edge removal takes rings of 3 to MaximumRing tets; a table over the ring's chains.
+constexpr int MaximumRing = 7;
+template <typename Value>
+using RingTable = std::array<std::array<Value, MaximumRing>, MaximumRing>;
+
 // A change must beat the worst tet it replaces by more than rounding.
 inline bool improves(double after, double before)
 {
@@ -56,9 +61,9 @@ private:
   bool orderedRing(int a, int b, const std::vector<int>& around, std::vector<int>& ring) const;
   double triangleQuality(int p, int q, int r, int a, int b, double side) const;
   double bestRingTriangulation(
-    int a, int b, const std::vector<int>& ring, std::vector<std::vector<int>>& split) const;
+    int a, int b, const std::vector<int>& ring, RingTable<int>& split) const;
   std::vector<Corners> ringTets(
-    int a, int b, const std::vector<int>& ring, const std::vector<std::vector<int>>& split) const;
+    int a, int b, const std::vector<int>& ring, const RingTable<int>& split) const;
   double totalVolume(const std::vector<Corners>& tets) const;
   bool swapFace(int t, int skip);
   bool smoothVertex(int v);

@@ -2,8 +2,8 @@
 
 #include "Improvement/Improver.h"
 
-#include "Core/ConstrainedFaces.h"
 #include "Core/EdgeSplits.h"
+#include "Core/FaceKey.h"
 #include "Core/TetQuality.h"
 #include "Refinement/SizeField.h"
 
@@ -11,7 +11,6 @@
 #include <cmath>
 #include <limits>
 #include <new>
-#include <unordered_map>
 #include <unordered_set>
 
 namespace cgmesh
@@ -73,18 +72,23 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
   }
   this->Fixed.assign(this->IdOf.size(), 0);
   this->Moved.assign(this->IdOf.size(), 0);
-  std::vector<Face> boundaryFaces, regionInterfaceFaces;
-  findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
-  for (const auto* faces : { &boundaryFaces, &regionInterfaceFaces })
+  // The corners of boundary faces (held by one tet) and material-interface faces stay. Grouped
+  // in local numbers, whose table is half the size of one in global ids.
+  if (this->Tets.empty())
   {
-    for (const Face& face : *faces)
-    {
-      for (PointId p : face)
-      {
-        this->Fixed[*this->LocalOf.find(p)] = 1;
-      }
-    }
+    return;
   }
+  forEachDistinctFace(this->Tets.front().data(), this->Tets.size(),
+    [this](const std::array<int, 3>& face, std::size_t first, std::size_t second, std::size_t count)
+    {
+      if (count == 1 || this->Regions[first] != this->Regions[second])
+      {
+        for (int v : face)
+        {
+          this->Fixed[v] = 1;
+        }
+      }
+    });
 }
 
 int Improver::localVertex(PointId id)
@@ -175,11 +179,32 @@ CellId Improver::parentOf(const Corners& corners, const std::vector<int>& replac
   return this->Parents[best];
 }
 
-// Orders the link of edge (a, b) into a cycle; false when the edge is on a boundary.
+// Orders the link of edge (a, b) into a cycle; false when the edge is on a boundary. The link's
+// vertices and their two partners live in fixed arrays: this runs for every edge of every poor
+// tet, and a map per call cost more than the walk.
 bool Improver::orderedRing(
   int a, int b, const std::vector<int>& around, std::vector<int>& ring) const
 {
-  std::unordered_map<int, std::vector<int>> partners;
+  int vertex[2 * MaximumRing], partner[2 * MaximumRing][2], partners[2 * MaximumRing];
+  int vertices = 0;
+  auto link = [&](int v, int w)
+  {
+    int k = 0;
+    while (k < vertices && vertex[k] != v)
+    {
+      ++k;
+    }
+    if (k == vertices)
+    {
+      vertex[vertices] = v;
+      partners[vertices++] = 0;
+    }
+    if (partners[k] < 2)
+    {
+      partner[k][partners[k]] = w;
+    }
+    ++partners[k];
+  };
   for (int t : around)
   {
     int other[2], n = 0;
@@ -190,36 +215,33 @@ bool Improver::orderedRing(
         other[n++] = v;
       }
     }
-    partners[other[0]].push_back(other[1]);
-    partners[other[1]].push_back(other[0]);
+    link(other[0], other[1]);
+    link(other[1], other[0]);
   }
-  for (const auto& entry : partners)
+  int start = 0;
+  for (int k = 0; k < vertices; ++k)
   {
-    if (entry.second.size() != 2)
+    if (partners[k] != 2)
     {
       return false;
     }
+    start = vertex[k] < vertex[start] ? k : start; // a deterministic start
   }
   ring.clear();
   int previous = -1;
-  int current = partners.begin()->first;
-  for (const auto& entry : partners)
-  {
-    current = std::min(current, entry.first); // a deterministic start
-  }
+  int current = start;
   while (ring.size() < around.size())
   {
-    ring.push_back(current);
-    const auto& next = partners.at(current);
-    const int step = next[0] != previous ? next[0] : next[1];
-    previous = current;
-    current = step;
-    if (current == ring.front())
+    ring.push_back(vertex[current]);
+    const int step = partner[current][0] != previous ? partner[current][0] : partner[current][1];
+    previous = vertex[current];
+    current = static_cast<int>(std::find(vertex, vertex + vertices, step) - vertex);
+    if (current == start)
     {
       break;
     }
   }
-  return ring.size() == around.size() && current == ring.front();
+  return ring.size() == around.size() && current == start;
 }
 
 // Worst mean ratio of the two tets that triangle (p, q, r) of a removed edge's ring makes with
@@ -241,7 +263,7 @@ double Improver::triangleQuality(int p, int q, int r, int a, int b, double side)
 // (dynamic programming over sub-chains ring[i..j]); returns that worst mean ratio. Triangles
 // taken in ring order all see a on one side: the side of the fan from ring[0] as a whole.
 double Improver::bestRingTriangulation(
-  int a, int b, const std::vector<int>& ring, std::vector<std::vector<int>>& split) const
+  int a, int b, const std::vector<int>& ring, RingTable<int>& split) const
 {
   const int n = static_cast<int>(ring.size());
   double side = 0;
@@ -249,8 +271,11 @@ double Improver::bestRingTriangulation(
   {
     side += this->orientation(ring[0], ring[i], ring[i + 1], a);
   }
-  std::vector<std::vector<double>> best(n, std::vector<double>(n, 0));
-  split.assign(n, std::vector<int>(n, -1));
+  RingTable<double> best{};
+  for (auto& row : split)
+  {
+    row.fill(-1);
+  }
   for (int length = 2; length < n; ++length)
   {
     for (int i = 0; i + length < n; ++i)
@@ -275,7 +300,7 @@ double Improver::bestRingTriangulation(
 
 // The tets of the chosen triangulation: each triangle joined to both ends of the removed edge.
 std::vector<Corners> Improver::ringTets(
-  int a, int b, const std::vector<int>& ring, const std::vector<std::vector<int>>& split) const
+  int a, int b, const std::vector<int>& ring, const RingTable<int>& split) const
 {
   std::vector<Corners> created;
   const int n = static_cast<int>(ring.size());
@@ -304,7 +329,7 @@ std::vector<Corners> Improver::ringTets(
 bool Improver::removeEdge(int a, int b)
 {
   const std::vector<int> around = this->aliveTetsWith({ a, b });
-  if (around.size() < 3 || around.size() > 7)
+  if (around.size() < 3 || around.size() > static_cast<std::size_t>(MaximumRing))
   {
     return false;
   }
@@ -327,7 +352,7 @@ bool Improver::removeEdge(int a, int b)
   {
     return false;
   }
-  std::vector<std::vector<int>> split;
+  RingTable<int> split;
   const double best = this->bestRingTriangulation(a, b, ring, split);
   if (!(best > 0) || !improves(best, before))
   {
