@@ -13,10 +13,11 @@ namespace
 
 // Flags the corners of the tets the sweep works on: those that touch a former interface vertex
 // and need improvement (poor, or short-edged when coarsening). Every operation stays among the
-// tets that share a vertex with them, so only those go into boxes. Returns how many were found.
+// tets that share a vertex with them, so only those go into boxes. Only the first `candidates`
+// partitions are looked at. Returns how many were found.
 std::int64_t flagCornersOfWork(const ColorLoopSetup& setup,
-  const std::vector<char>& formerInterface, AdaptationState& state, std::vector<char>& flagged,
-  Status& status)
+  const std::vector<char>& formerInterface, std::size_t candidates, AdaptationState& state,
+  std::vector<char>& flagged, Status& status)
 {
   std::vector<double> noProvisionalPoints, noProvisionalSizes;
   PartitionPoints points{ &state.coordinates, &noProvisionalPoints };
@@ -25,8 +26,8 @@ std::int64_t flagCornersOfWork(const ColorLoopSetup& setup,
     points.globalSizes = &state.sizes;
     points.provisionalSizes = &noProvisionalSizes;
   }
-  std::vector<std::vector<PointId>> corners(state.partitions.size());
-  status = runParallel(setup.threads, static_cast<std::int64_t>(state.partitions.size()),
+  std::vector<std::vector<PointId>> corners(candidates);
+  status = runParallel(setup.threads, static_cast<std::int64_t>(candidates),
     [&](std::int64_t p)
     {
       for (const Tet& tet : state.partitions[p].tets)
@@ -53,16 +54,20 @@ std::int64_t flagCornersOfWork(const ColorLoopSetup& setup,
 
 // One improvement sweep over box partitions; `sweepIndex` 0 lays the boxes from the bounding
 // box's corner, 1 shifts them by half a box. Only the tets that share a vertex with a tet to work
-// on move into the boxes; the others stay in their partitions, which follow the boxes.
+// on move into the boxes; the others stay in their partitions, which follow the boxes. Work is
+// looked for in the first `candidates` partitions; `candidates` becomes the number of boxes, or 0
+// when there was no work.
 Status improveOverBoxes(const ColorLoopSetup& setup, const AdaptationOptions& options, int cells,
-  int sweepIndex, const std::vector<char>& formerInterface, AdaptationState& state,
-  AdaptationSummary& summary, PhaseReporter& reporter)
+  int sweepIndex, const std::vector<char>& formerInterface, std::size_t& candidates,
+  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
 {
   reporter.enter(Phase::Improve);
   std::vector<char> cornersOfWork;
   Status status = Status::success();
-  if (flagCornersOfWork(setup, formerInterface, state, cornersOfWork, status) == 0 || !status.ok())
+  if (flagCornersOfWork(setup, formerInterface, candidates, state, cornersOfWork, status) == 0 ||
+    !status.ok())
   {
+    candidates = 0;
     return status; // nothing near a former interface needs work
   }
   const ParallelFor parallelFor = parallelForOn(setup.threads);
@@ -76,6 +81,7 @@ Status improveOverBoxes(const ColorLoopSetup& setup, const AdaptationOptions& op
   }
   std::vector<PartitionMesh> staying = std::move(state.partitions);
   state.partitions = std::move(boxes);
+  candidates = state.partitions.size();
   PartitionGraph graph;
   status = buildBoxGraph(state.partitions, state.coordinates, layout, parallelFor, graph);
   std::vector<int> colorOfBox;
@@ -111,10 +117,13 @@ Status improveAcrossFormerInterfaces(const ColorLoopSetup& setup, const Adaptati
   AdaptationSummary& summary, PhaseReporter& reporter)
 {
   // Box faces freeze vertices in their turn: a second layout shifted by half a box frees them.
-  for (int sweepIndex = 0; sweepIndex < 2; ++sweepIndex)
+  // The tets that stayed out of the first layout's boxes are as they were, so the second looks
+  // for work in those boxes only.
+  std::size_t candidates = state.partitions.size();
+  for (int sweepIndex = 0; sweepIndex < 2 && candidates > 0; ++sweepIndex)
   {
-    Status status = improveOverBoxes(
-      setup, options, boxesPerAxis, sweepIndex, formerInterface, state, summary, reporter);
+    Status status = improveOverBoxes(setup, options, boxesPerAxis, sweepIndex, formerInterface,
+      candidates, state, summary, reporter);
     if (!status.ok() || summary.aborted)
     {
       return status;
