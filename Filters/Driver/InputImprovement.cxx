@@ -24,18 +24,6 @@ void returnTetsToPartitions(
   state.partitions = std::move(returned);
 }
 
-PartitionGraph graphOfPartitions(const std::vector<PartitionMesh>& partitions, PointId points)
-{
-  std::vector<Tet> tets;
-  std::vector<int> partitionOfTet;
-  for (std::size_t p = 0; p < partitions.size(); ++p)
-  {
-    tets.insert(tets.end(), partitions[p].tets.begin(), partitions[p].tets.end());
-    partitionOfTet.insert(partitionOfTet.end(), partitions[p].tets.size(), static_cast<int>(p));
-  }
-  return buildPartitionGraph(tets, partitionOfTet, static_cast<int>(partitions.size()), points);
-}
-
 } // namespace
 
 bool improvesInputFirst(const AdaptationOptions& options, const AdaptationPlan& plan)
@@ -79,7 +67,7 @@ Status improveInputFirst(const AdaptationOptions& options, const std::vector<int
   returnTetsToPartitions(state, partitionOfCell, summary.plan.partitions);
 
   reporter.enter(Phase::Graph);
-  graph = graphOfPartitions(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
+  graph = buildPartitionGraph(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
   summary.interfacePoints = graph.interfacePoints;
   reporter.enter(Phase::Color);
   status = colorPartitions(graph, options.coloring, setup.threads, summary.colorOfPartition);

@@ -199,9 +199,10 @@ void test_device_refinement_with_improvement()
 }
 
 // The FinFET meshed by TetGen (radius-edge bound only, so slivers stay) has poor tets before
-// refinement. Improving it first (ImproveInput, the default) keeps every invariant, exact linear point data through the moved input points and
-// thread independence, and leaves fewer poor tets and a better 1st percentile of the minimum
-// dihedral angle than improving after refinement only. A refinement selection turns it off.
+// refinement. Improving it first (ImproveInput, the default) keeps every invariant, exact linear
+// point data through the moved input points and thread independence, and leaves fewer poor tets
+// and a better 1st percentile of the minimum dihedral angle than improving after refinement
+// only. A refinement selection turns it off.
 void test_input_improved_before_refinement()
 {
   TetMesh input;

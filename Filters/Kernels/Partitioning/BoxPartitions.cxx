@@ -293,18 +293,6 @@ int reachInBoxes(
   return reach;
 }
 
-PartitionGraph exactGraph(const std::vector<PartitionMesh>& boxes, PointId points)
-{
-  std::vector<Tet> tets;
-  std::vector<int> boxOfTet;
-  for (std::size_t b = 0; b < boxes.size(); ++b)
-  {
-    tets.insert(tets.end(), boxes[b].tets.begin(), boxes[b].tets.end());
-    boxOfTet.insert(boxOfTet.end(), boxes[b].tets.size(), static_cast<int>(b));
-  }
-  return buildPartitionGraph(tets, boxOfTet, static_cast<int>(boxes.size()), points);
-}
-
 } // namespace
 
 Status buildBoxGraph(const std::vector<PartitionMesh>& boxes,
@@ -344,7 +332,7 @@ Status buildBoxGraph(const std::vector<PartitionMesh>& boxes,
   const int farthest = reach.empty() ? 0 : *std::max_element(reach.begin(), reach.end());
   if (farthest > 3)
   {
-    graph = exactGraph(boxes, static_cast<PointId>(coordinates.size() / 3));
+    graph = buildPartitionGraph(boxes, static_cast<PointId>(coordinates.size() / 3));
     return Status::success();
   }
 

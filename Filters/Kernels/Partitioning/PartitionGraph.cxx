@@ -113,6 +113,20 @@ PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
   return graph;
 }
 
+PartitionGraph buildPartitionGraph(
+  const std::vector<PartitionMesh>& partitions, PointId numberOfPoints)
+{
+  std::vector<Tet> tets;
+  std::vector<int> partitionOfTet;
+  for (std::size_t p = 0; p < partitions.size(); ++p)
+  {
+    tets.insert(tets.end(), partitions[p].tets.begin(), partitions[p].tets.end());
+    partitionOfTet.insert(partitionOfTet.end(), partitions[p].tets.size(), static_cast<int>(p));
+  }
+  return buildPartitionGraph(
+    tets, partitionOfTet, static_cast<int>(partitions.size()), numberOfPoints);
+}
+
 PartitionGraph makePartitionGraph(int numberOfPartitions, std::vector<std::pair<int, int>> edges)
 {
   std::vector<std::pair<int, int>> directed;

@@ -3,6 +3,7 @@
 #ifndef cgmesh_PartitionGraph_h
 #define cgmesh_PartitionGraph_h
 
+#include "Core/PartitionMesh.h"
 #include "Core/TetMesh.h"
 
 #include <vector>
@@ -27,6 +28,10 @@ struct PartitionGraph
 
 PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
   const std::vector<int>& partitionOfCell, int numberOfPartitions, PointId numberOfPoints);
+
+// The same for partitions held as meshes: partition p owns the tets of partitions[p].
+PartitionGraph buildPartitionGraph(
+  const std::vector<PartitionMesh>& partitions, PointId numberOfPoints);
 
 // Builds a graph from an explicit undirected edge list (tests and colouring benchmarks).
 PartitionGraph makePartitionGraph(int numberOfPartitions, std::vector<std::pair<int, int>> edges);
