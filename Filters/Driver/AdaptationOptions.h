@@ -184,10 +184,10 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "again over box partitions across the former interfaces; --no-improve skips it",
       &O::improveQuality },
     { "ImproveInput", "--no-improve-input", "", K::Boolean, 0, 1, 1, "", S::Template,
-      "with ImproveQuality: improve the input's tets before refining them, as the refined ones "
-      "are; children keep their parent's shape, so this does the work on an eighth of the tets "
-      "per pass. Not with RefinementRegions or RefinementBox, which leave the other tets as they "
-      "are; --no-improve-input improves only after refinement",
+      "with ImproveQuality, also improve the input's tets before refining them, as the refined "
+      "ones are; children keep their parent's shape, so this does the work on an eighth of the "
+      "tets per pass. Not with RefinementRegions or RefinementBox, which leave the other tets as "
+      "they are; --no-improve-input improves only after refinement",
       &O::improveInput },
     { "NumberOfImprovementPasses", "--improve-passes", "N", K::Integer, 0, 20, 2, "", S::Any,
       "passes of edge removal, face swaps and smoothing per partition in each sweep",
