@@ -33,6 +33,13 @@ std::size_t BoxLayout::boxAt(const std::array<int, 3>& index) const
     static_cast<std::size_t>(index[0]);
 }
 
+std::array<int, 3> BoxLayout::indexOfBox(std::size_t box) const
+{
+  const std::size_t n = static_cast<std::size_t>(this->boxesPerAxis());
+  return { static_cast<int>(box % n), static_cast<int>(box / n % n),
+    static_cast<int>(box / n / n) };
+}
+
 std::size_t BoxLayout::boxOf(const Tet& tet, const std::vector<double>& coordinates) const
 {
   double centroid[3] = { 0, 0, 0 };
@@ -151,19 +158,13 @@ void keepStaying(PartitionMesh& partition, const MovingTets& moving)
   {
     if (!moved[t])
     {
-      partition.tets[kept] = partition.tets[t];
-      partition.parentCells[kept] = partition.parentCells[t];
-      if (!partition.regions.empty())
-      {
-        partition.regions[kept] = partition.regions[t];
-      }
-      ++kept;
+      copyTetTo(partition, t, partition, kept++); // kept <= t: nothing unread is overwritten
     }
   }
   resizeMesh(partition, kept, !partition.regions.empty());
   if (2 * kept < partition.tets.capacity())
   {
-    partition.tets.shrink_to_fit(); // most tets left: give their memory back
+    partition.tets.shrink_to_fit(); // most tets moved out: give their memory back
     partition.parentCells.shrink_to_fit();
     partition.regions.shrink_to_fit();
   }
@@ -303,11 +304,6 @@ Status buildBoxGraph(const std::vector<PartitionMesh>& boxes,
   std::vector<CornerBounds> bounds(boxes.size());
   std::vector<int> reach(boxes.size(), 0);
   const int n = layout.boxesPerAxis();
-  auto indexOfBox = [n](std::int64_t b)
-  {
-    return std::array<int, 3>{ static_cast<int>(b % n), static_cast<int>(b / n % n),
-      static_cast<int>(b / n / n) };
-  };
   Status status = parallelFor(boxCount,
     [&](std::int64_t b)
     {
@@ -323,7 +319,7 @@ Status buildBoxGraph(const std::vector<PartitionMesh>& boxes,
           }
         }
       }
-      reach[b] = box.empty() ? 0 : reachInBoxes(box, indexOfBox(b), layout);
+      reach[b] = box.empty() ? 0 : reachInBoxes(box, layout.indexOfBox(b), layout);
     });
   if (!status.ok())
   {
@@ -346,7 +342,7 @@ Status buildBoxGraph(const std::vector<PartitionMesh>& boxes,
       {
         return;
       }
-      const std::array<int, 3> at = indexOfBox(b);
+      const std::array<int, 3> at = layout.indexOfBox(b);
       const int span = 2 * farthest + 1;
       std::array<int, 3> from, to;
       for (int axis = 0; axis < 3; ++axis)

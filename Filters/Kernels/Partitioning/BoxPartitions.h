@@ -30,6 +30,8 @@ struct BoxLayout
   std::array<int, 3> indexOf(const double* point) const;
   // Box number of a grid index: x fastest.
   std::size_t boxAt(const std::array<int, 3>& index) const;
+  // The grid index of a box number (the inverse of boxAt).
+  std::array<int, 3> indexOfBox(std::size_t box) const;
   // The box of the tet's centroid.
   std::size_t boxOf(const Tet& tet, const std::vector<double>& coordinates) const;
 };
