@@ -276,6 +276,8 @@ void collectFilterStatistics(
     statistics.seconds.emplace_back(
       phaseName(static_cast<Phase>(phase)), summary.seconds[static_cast<Phase>(phase)]);
   }
+  statistics.seconds.emplace_back("input", filter->GetLastInputSeconds());
+  statistics.seconds.emplace_back("output", filter->GetLastOutputSeconds());
   statistics.seconds.emplace_back("quality", filter->GetLastQualitySeconds());
   statistics.seconds.emplace_back("total", filter->GetLastTotalSeconds());
 }

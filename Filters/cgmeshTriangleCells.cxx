@@ -66,7 +66,9 @@ void separateTriangles(vtkUnstructuredGrid* grid, vtkUnstructuredGrid* tets, Tri
   tets->SetPoints(grid->GetPoints());
   tets->GetPointData()->ShallowCopy(grid->GetPointData());
   tets->SetCells(VTK_TETRA, tetCells);
-  copyCellData(grid->GetCellData(), cells.tetCellIds, tets->GetCellData());
+  copyCellData(
+    grid->GetCellData(), static_cast<vtkIdType>(cells.tetCellIds.size()),
+    [&cells](vtkIdType tet) { return cells.tetCellIds[tet]; }, tets->GetCellData());
   tets->GetFieldData()->ShallowCopy(grid->GetFieldData());
 }
 

@@ -6,6 +6,7 @@
 #include "vtkCellType.h"
 #include "vtkCellTypes.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
@@ -17,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -37,20 +39,86 @@ vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid, bool trianglesAccepted)
   return count;
 }
 
-void copyCellData(vtkCellData* input, const std::vector<vtkIdType>& sourceOf, vtkCellData* output)
+namespace
 {
-  const vtkIdType numberOfCells = static_cast<vtkIdType>(sourceOf.size());
-  output->CopyAllocate(input, numberOfCells);
-  vtkNew<vtkIdList> sourceIds;
-  vtkNew<vtkIdList> targetIds;
-  sourceIds->SetNumberOfIds(numberOfCells);
-  targetIds->SetNumberOfIds(numberOfCells);
-  for (vtkIdType cellId = 0; cellId < numberOfCells; ++cellId)
+
+// The input array that an array made by CopyAllocate copies: the attribute of the same kind, else
+// the input array of that name (names are unique in field data); null for an unnamed array.
+vtkAbstractArray* sourceOfCopy(vtkCellData* input, vtkCellData* output, int index)
+{
+  const int attribute = output->IsArrayAnAttribute(index);
+  if (attribute >= 0)
   {
-    sourceIds->SetId(cellId, sourceOf[cellId]);
-    targetIds->SetId(cellId, cellId);
+    return input->GetAbstractAttribute(attribute);
   }
-  output->CopyData(input, sourceIds, targetIds);
+  const char* name = output->GetArrayName(index);
+  return name ? input->GetAbstractArray(name) : nullptr;
+}
+
+// Whether tuples of `source` can be copied into `target` as bytes from several threads at once:
+// contiguous arrays of one numeric type (bits share bytes, strings own memory).
+bool copiesAsBytes(vtkAbstractArray* source, vtkAbstractArray* target)
+{
+  return source && vtkDataArray::FastDownCast(source) && source->GetDataType() != VTK_BIT &&
+    source->GetDataType() == target->GetDataType() &&
+    source->GetNumberOfComponents() == target->GetNumberOfComponents() &&
+    source->HasStandardMemoryLayout() && target->HasStandardMemoryLayout() &&
+    source->GetDataTypeSize() > 0;
+}
+
+} // namespace
+
+void copyCellData(vtkCellData* input, vtkIdType numberOfCells,
+  const std::function<vtkIdType(vtkIdType)>& sourceOf, vtkCellData* output,
+  const ParallelFor& parallelFor)
+{
+  output->CopyAllocate(input, numberOfCells);
+  std::vector<vtkAbstractArray*> sources(output->GetNumberOfArrays());
+  for (int index = 0; index < output->GetNumberOfArrays(); ++index)
+  {
+    sources[index] = sourceOfCopy(input, output, index);
+  }
+  if (std::find(sources.begin(), sources.end(), nullptr) != sources.end())
+  {
+    // An unnamed array cannot be paired with its source: VTK's own copy, one tuple at a time.
+    vtkNew<vtkIdList> sourceIds;
+    vtkNew<vtkIdList> targetIds;
+    sourceIds->SetNumberOfIds(numberOfCells);
+    targetIds->SetNumberOfIds(numberOfCells);
+    for (vtkIdType cellId = 0; cellId < numberOfCells; ++cellId)
+    {
+      sourceIds->SetId(cellId, sourceOf(cellId));
+      targetIds->SetId(cellId, cellId);
+    }
+    output->CopyData(input, sourceIds, targetIds);
+    return;
+  }
+  for (int index = 0; index < output->GetNumberOfArrays(); ++index)
+  {
+    vtkAbstractArray* source = sources[index];
+    vtkAbstractArray* target = output->GetAbstractArray(index);
+    target->SetNumberOfTuples(numberOfCells);
+    if (!copiesAsBytes(source, target))
+    {
+      for (vtkIdType cellId = 0; cellId < numberOfCells; ++cellId)
+      {
+        target->SetTuple(cellId, sourceOf(cellId), source);
+      }
+      continue;
+    }
+    const std::size_t tupleBytes =
+      static_cast<std::size_t>(target->GetDataTypeSize()) * target->GetNumberOfComponents();
+    const char* from = static_cast<const char*>(source->GetVoidPointer(0));
+    char* to = static_cast<char*>(target->GetVoidPointer(0));
+    forEachRange(parallelFor, numberOfCells, IndicesPerCopyRange,
+      [&](std::int64_t begin, std::int64_t end)
+      {
+        for (std::int64_t cellId = begin; cellId < end; ++cellId)
+        {
+          std::memcpy(to + cellId * tupleBytes, from + sourceOf(cellId) * tupleBytes, tupleBytes);
+        }
+      });
+  }
 }
 
 std::string describeNonTetrahedra(vtkUnstructuredGrid* grid, bool trianglesAccepted)
@@ -294,47 +362,61 @@ Status convertToTetMesh(vtkUnstructuredGrid* grid, const std::string& regionArra
   return Status::success();
 }
 
-void convertToUnstructuredGrid(
-  const TetMesh& mesh, vtkUnstructuredGrid* grid, const std::string& regionArrayName)
+void convertToUnstructuredGrid(const TetMesh& mesh, vtkUnstructuredGrid* grid,
+  const std::string& regionArrayName, const ParallelFor& parallelFor)
 {
+  const vtkIdType numberOfPoints = mesh.numberOfPoints();
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetName("Points"); // as vtkPoints names its own
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(numberOfPoints);
+  double* xyz = coordinates->GetPointer(0);
+  forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      std::copy(
+        mesh.coordinates.begin() + 3 * begin, mesh.coordinates.begin() + 3 * end, xyz + 3 * begin);
+    });
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(mesh.numberOfPoints());
-  for (PointId pointId = 0; pointId < mesh.numberOfPoints(); ++pointId)
-  {
-    points->SetPoint(pointId, mesh.point(pointId));
-  }
+  points->SetData(coordinates);
 
   const vtkIdType numberOfTets = mesh.numberOfTets();
   vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfValues(numberOfTets + 1);
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(4 * numberOfTets);
-  for (vtkIdType tetId = 0; tetId < numberOfTets; ++tetId)
-  {
-    offsets->SetValue(tetId, 4 * tetId);
-    for (int corner = 0; corner < 4; ++corner)
+  vtkIdType* offset = offsets->GetPointer(0);
+  vtkIdType* corners = connectivity->GetPointer(0);
+  vtkNew<vtkIntArray> regions;
+  const bool withRegions = mesh.hasRegions() && !regionArrayName.empty();
+  regions->SetName(regionArrayName.c_str());
+  regions->SetNumberOfValues(withRegions ? numberOfTets : 0);
+  int* region = regions->GetPointer(0);
+  forEachRange(parallelFor, numberOfTets, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
     {
-      connectivity->SetValue(4 * tetId + corner, static_cast<vtkIdType>(mesh.tets[tetId][corner]));
-    }
-  }
-  offsets->SetValue(numberOfTets, 4 * numberOfTets);
+      for (std::int64_t tetId = begin; tetId < end; ++tetId)
+      {
+        offset[tetId] = 4 * tetId;
+        for (int corner = 0; corner < 4; ++corner)
+        {
+          corners[4 * tetId + corner] = static_cast<vtkIdType>(mesh.tets[tetId][corner]);
+        }
+        if (withRegions)
+        {
+          region[tetId] = mesh.regions[tetId];
+        }
+      }
+    });
+  offset[numberOfTets] = 4 * numberOfTets;
   vtkNew<vtkCellArray> cells;
   cells->SetData(offsets, connectivity);
 
   grid->Initialize();
   grid->SetPoints(points);
   grid->SetCells(VTK_TETRA, cells);
-
-  if (mesh.hasRegions() && !regionArrayName.empty())
+  if (withRegions)
   {
-    vtkNew<vtkIntArray> regions;
-    regions->SetName(regionArrayName.c_str());
-    regions->SetNumberOfValues(numberOfTets);
-    for (vtkIdType tetId = 0; tetId < numberOfTets; ++tetId)
-    {
-      regions->SetValue(tetId, mesh.regions[tetId]);
-    }
     grid->GetCellData()->AddArray(regions);
   }
 }

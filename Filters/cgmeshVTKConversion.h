@@ -7,8 +7,10 @@
 #include "vtkType.h"             // for vtkIdType
 
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,10 +35,12 @@ CGMESHFILTERS_EXPORT vtkIdType countNonTetrahedra(
 CGMESHFILTERS_EXPORT std::string describeNonTetrahedra(
   vtkUnstructuredGrid* grid, bool trianglesAccepted = false);
 
-// Output cell i receives every array's tuple of input cell sourceOf[i] (`output` is allocated
-// for sourceOf.size() cells).
-CGMESHFILTERS_EXPORT void copyCellData(
-  vtkCellData* input, const std::vector<vtkIdType>& sourceOf, vtkCellData* output);
+// Output cell i receives every array's tuple of input cell sourceOf(i), for the `numberOfCells`
+// output cells. `parallelFor` runs the copies of plain arrays in ranges of cells (sourceOf is
+// called concurrently); the output does not depend on it.
+CGMESHFILTERS_EXPORT void copyCellData(vtkCellData* input, vtkIdType numberOfCells,
+  const std::function<vtkIdType(vtkIdType)>& sourceOf, vtkCellData* output,
+  const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 // Copies points and tetrahedra of `grid` into `mesh`. When `regionArrayName` is not empty the named
 // cell array (any numeric type, first component, converted to int) becomes mesh.regions; a missing
@@ -49,8 +53,11 @@ CGMESHFILTERS_EXPORT Status convertToTetMesh(vtkUnstructuredGrid* grid,
 
 // Replaces the geometry of `grid` with `mesh` (double points, VTK_TETRA cells). When the mesh has
 // regions and `regionArrayName` is not empty, they are stored as an int cell array of that name.
+// `parallelFor` fills the arrays in ranges: the first write to a fresh page costs more than the
+// copy itself, and it is done by the thread that writes it.
 CGMESHFILTERS_EXPORT void convertToUnstructuredGrid(const TetMesh& mesh, vtkUnstructuredGrid* grid,
-  const std::string& regionArrayName = std::string());
+  const std::string& regionArrayName = std::string(),
+  const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 } // namespace cgmesh
 

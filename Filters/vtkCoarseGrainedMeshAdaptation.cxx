@@ -118,7 +118,7 @@ void addTextDiagnostics(const cgmesh::AdaptationSummary& result,
 }
 
 void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshAdaptation* filter,
-  double qualitySeconds, double totalSeconds, vtkFieldData* fieldData)
+  vtkFieldData* fieldData)
 {
   addFieldValue(fieldData, "NumberOfColors", result.numberOfColors);
   addFieldValue(fieldData, "NumberOfPartitions", result.plan.partitions);
@@ -181,8 +181,10 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
     addFieldValue(
       fieldData, (name + "Seconds").c_str(), result.seconds[static_cast<cgmesh::Phase>(phase)]);
   }
-  addFieldValue(fieldData, "QualitySeconds", qualitySeconds);
-  addFieldValue(fieldData, "TotalSeconds", totalSeconds);
+  addFieldValue(fieldData, "InputSeconds", filter->GetLastInputSeconds());
+  addFieldValue(fieldData, "OutputSeconds", filter->GetLastOutputSeconds());
+  addFieldValue(fieldData, "QualitySeconds", filter->GetLastQualitySeconds());
+  addFieldValue(fieldData, "TotalSeconds", filter->GetLastTotalSeconds());
 }
 
 // The filter's parameters, with the progress and abort hooks of this run. Provenance is needed to
@@ -234,6 +236,8 @@ class vtkCoarseGrainedMeshAdaptation::vtkInternals
 public:
   cgmesh::AdaptationOptions Parameters; // the table's defaults until set
   cgmesh::AdaptationSummary LastSummary;
+  double LastInputSeconds = 0;
+  double LastOutputSeconds = 0;
   double LastQualitySeconds = 0;
   double LastTotalSeconds = 0;
   bool HasRun = false;
@@ -314,6 +318,18 @@ const char* vtkCoarseGrainedMeshAdaptation::GetParameterText(const char* name)
 const cgmesh::AdaptationSummary* vtkCoarseGrainedMeshAdaptation::GetLastSummary() const
 {
   return this->Internals->HasRun ? &this->Internals->LastSummary : nullptr;
+}
+
+//------------------------------------------------------------------------------
+double vtkCoarseGrainedMeshAdaptation::GetLastInputSeconds() const
+{
+  return this->Internals->LastInputSeconds;
+}
+
+//------------------------------------------------------------------------------
+double vtkCoarseGrainedMeshAdaptation::GetLastOutputSeconds() const
+{
+  return this->Internals->LastOutputSeconds;
 }
 
 //------------------------------------------------------------------------------
@@ -499,6 +515,7 @@ bool vtkCoarseGrainedMeshAdaptation::AdaptPiece(
 {
   const cgmesh::Status status = cgmesh::adaptMesh(run.mesh, options, run.result);
   this->Internals->LastSummary = run.result.summary;
+  this->Internals->LastOutputSeconds = 0;
   this->Internals->LastQualitySeconds = 0;
   this->Internals->HasRun = true;
   reportWarnings(this, run.result.summary);
@@ -518,7 +535,9 @@ bool vtkCoarseGrainedMeshAdaptation::AdaptPiece(
   adapted.triangles = run.withTriangles ? &run.triangles : nullptr;
   adapted.interpolatedPointArrays = this->Internals->Parameters.interpolatedPointArrays;
   adapted.labelPointArrays = this->Internals->Parameters.labelPointArrays;
+  const cgmesh::Stopwatch outputStopwatch;
   cgmesh::fillAdaptedGrid(adapted, run.result, output);
+  this->Internals->LastOutputSeconds = outputStopwatch.seconds();
   this->UpdateProgress(0.9);
   const cgmesh::Stopwatch qualityStopwatch;
   const cgmesh::Status quality =
@@ -675,6 +694,7 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   {
     return 0;
   }
+  this->Internals->LastInputSeconds = stopwatch.seconds();
 
   cgmesh::AdaptationOptions options =
     makeOptions(this, this->Internals->Parameters, run.input, run.withTriangles);
@@ -711,8 +731,7 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   if (hasPiece)
   {
     this->Internals->LastTotalSeconds = stopwatch.seconds();
-    addFieldData(run.result.summary, this, this->Internals->LastQualitySeconds,
-      this->Internals->LastTotalSeconds, output->GetFieldData());
+    addFieldData(run.result.summary, this, output->GetFieldData());
   }
   this->UpdateProgress(1.0);
   return 1;

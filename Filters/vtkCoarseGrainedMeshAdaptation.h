@@ -44,8 +44,10 @@
  * CellsPerColor, one tuple per colour), ColorBalance (largest colour over the mean, in partitions),
  * the improvement counts (EdgeRemovals, FaceSwaps, VertexMoves) and the seconds spent per phase
  * (PrepareSeconds, PartitionSeconds, GraphSeconds, ColorSeconds, HealSeconds, AdaptSeconds,
- * ImproveSeconds, PostSeconds, MergeSeconds, QualitySeconds, TotalSeconds; each second is charged
- * to one phase only). Progress never decreases. The output does not depend on NumberOfThreads.
+ * ImproveSeconds, PostSeconds, MergeSeconds; each second is charged to one phase only), and the
+ * filter's own: InputSeconds (checking and converting the input), OutputSeconds (building the
+ * output grid and its cell and point data), QualitySeconds (the quality arrays) and TotalSeconds.
+ * Progress never decreases. The output does not depend on NumberOfThreads.
  */
 #ifndef vtkCoarseGrainedMeshAdaptation_h
 #define vtkCoarseGrainedMeshAdaptation_h
@@ -190,10 +192,13 @@ public:
   ///@{
   /**
    * The last run's summary for C++ front ends: the resolved plan, counts, typed warnings and the
-   * seconds per phase (AdaptationDriver.h), the seconds the quality arrays took and the whole
-   * run's. The summary is nullptr before a run and after a run that stopped before refining.
+   * seconds per phase (AdaptationDriver.h), the seconds the input's conversion, the output grid
+   * and the quality arrays took, and the whole run's. The summary is nullptr before a run and after
+   * a run that stopped before refining.
    */
   const cgmesh::AdaptationSummary* GetLastSummary() const;
+  double GetLastInputSeconds() const;
+  double GetLastOutputSeconds() const;
   double GetLastQualitySeconds() const;
   double GetLastTotalSeconds() const;
   ///@}

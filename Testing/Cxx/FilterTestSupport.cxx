@@ -370,9 +370,9 @@ void checkOutputArrays(vtkUnstructuredGrid* output)
   CGMESH_CHECK(partitions >= 1 && colors >= 1, "partition/colour counts not positive");
   CGMESH_CHECK(fieldValue(output, "NumberOfThreads") >= 1, "thread count not positive");
   CGMESH_CHECK(fieldValue(output, "EdgeLengthThreshold") > 0, "threshold not positive");
-  for (const char* phase :
-    { "PartitionSeconds", "GraphSeconds", "ColorSeconds", "HealSeconds", "AdaptSeconds",
-      "PostSeconds", "ImproveSeconds", "MergeSeconds", "QualitySeconds", "TotalSeconds" })
+  for (const char* phase : { "PartitionSeconds", "GraphSeconds", "ColorSeconds", "HealSeconds",
+         "AdaptSeconds", "PostSeconds", "ImproveSeconds", "MergeSeconds", "InputSeconds",
+         "OutputSeconds", "QualitySeconds", "TotalSeconds" })
   {
     CGMESH_CHECK(fieldValue(output, phase) >= 0, phase << " negative");
   }

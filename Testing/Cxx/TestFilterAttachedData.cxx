@@ -3,7 +3,14 @@
 // InterpolatedPointArrays, rounded) or kept as labels (integer ones by default).
 #include "FilterRunChecks.h"
 
+#include "cgmeshVTKConversion.h"
+
+#include "ParallelFor.h"
+
+#include "vtkBitArray.h"
 #include "vtkCellData.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkPointData.h"
 #include "vtkStringArray.h"
 #include "vtkVariant.h"
@@ -212,8 +219,93 @@ void test_attachedData()
 
 } // namespace
 
+// Every array of `actual` holds what the same array of `expected` holds: name, attribute role,
+// type, shape and every value.
+void checkSameCellData(vtkCellData* expected, vtkCellData* actual, const std::string& what)
+{
+  CGMESH_CHECK(actual->GetNumberOfArrays() == expected->GetNumberOfArrays(),
+    what << ": " << actual->GetNumberOfArrays() << " arrays instead of "
+         << expected->GetNumberOfArrays());
+  for (int index = 0; index < std::min(actual->GetNumberOfArrays(), expected->GetNumberOfArrays());
+       ++index)
+  {
+    vtkAbstractArray* want = expected->GetAbstractArray(index);
+    vtkAbstractArray* got = actual->GetAbstractArray(index);
+    const std::string name = want->GetName() ? want->GetName() : "(unnamed)";
+    CGMESH_CHECK(got->GetDataType() == want->GetDataType() &&
+        got->GetNumberOfComponents() == want->GetNumberOfComponents() &&
+        got->GetNumberOfValues() == want->GetNumberOfValues() &&
+        actual->IsArrayAnAttribute(index) == expected->IsArrayAnAttribute(index) &&
+        (got->GetName() ? std::string(got->GetName()) : "(unnamed)") == name,
+      what << ": array " << index << " (" << name << ") differs in kind");
+    vtkIdType wrongValues = 0;
+    for (vtkIdType value = 0; value < std::min(got->GetNumberOfValues(), want->GetNumberOfValues());
+         ++value)
+    {
+      wrongValues += got->GetVariantValue(value) == want->GetVariantValue(value) ? 0 : 1;
+    }
+    CGMESH_CHECK(wrongValues == 0, what << ": array " << name << ", " << wrongValues << " values");
+  }
+}
+
+// copyCellData on two threads gives what VTK's CopyData gives: plain arrays of every type copied
+// as bytes in ranges, string and bit arrays tuple by tuple, attributes included, and with an
+// unnamed array, which cannot be paired with its source, VTK's own copy.
+void test_copyCellDataMatchesVTK()
+{
+  constexpr vtkIdType InputCells = 5000;
+  constexpr vtkIdType OutputCells = 200000; // several ranges of IndicesPerCopyRange
+  const auto sourceOf = [](vtkIdType cellId)
+  {
+    return (cellId * 7919) % InputCells;
+  };
+  for (const bool unnamedArray : { false, true })
+  {
+    vtkNew<vtkCellData> input;
+    for (const int type : NumericTypes)
+    {
+      input->AddArray(makeArray(type, 3, arrayName("Cell", type, 3), InputCells, cellValue));
+    }
+    input->SetScalars(makeArray(VTK_FLOAT, 1, "Scalars", InputCells, cellValue));
+    vtkNew<vtkStringArray> names;
+    names->SetName("CellName");
+    vtkNew<vtkBitArray> bits;
+    bits->SetName("CellBit");
+    for (vtkIdType cellId = 0; cellId < InputCells; ++cellId)
+    {
+      names->InsertNextValue("cell " + std::to_string(cellId));
+      bits->InsertNextValue(static_cast<int>(cellId % 3 == 0));
+    }
+    input->AddArray(names);
+    input->AddArray(bits);
+    if (unnamedArray)
+    {
+      vtkSmartPointer<vtkDataArray> unnamed = makeArray(VTK_INT, 1, "", InputCells, cellValue);
+      unnamed->SetName(nullptr);
+      input->AddArray(unnamed);
+    }
+
+    vtkNew<vtkCellData> expected;
+    expected->CopyAllocate(input, OutputCells);
+    vtkNew<vtkIdList> sourceIds;
+    vtkNew<vtkIdList> targetIds;
+    for (vtkIdType cellId = 0; cellId < OutputCells; ++cellId)
+    {
+      sourceIds->InsertNextId(sourceOf(cellId));
+      targetIds->InsertNextId(cellId);
+    }
+    expected->CopyData(input, sourceIds, targetIds);
+
+    vtkNew<vtkCellData> actual;
+    cgmesh::copyCellData(input, OutputCells, sourceOf, actual, cgmesh::parallelForOn(2));
+    checkSameCellData(expected, actual,
+      unnamedArray ? "copyCellData, an unnamed array" : "copyCellData, every kind of array");
+  }
+}
+
 int main()
 {
+  test_copyCellDataMatchesVTK();
   test_attachedData();
   if (cgmesh_test::FailureCount > 0)
   {

@@ -113,7 +113,8 @@ def test_generate_refine_check(cgmesh, scratch):
     check(statistics["output"]["points"] > statistics["input"]["points"], "point counts")
     for key in ("colors", "partitions", "threads", "edgeLengthThreshold"):
         check(key in statistics, "stats lacks " + key)
-    for phase in ("partition", "graph", "color", "adapt", "heal", "merge", "quality", "total"):
+    for phase in ("partition", "graph", "color", "adapt", "heal", "merge", "input", "output",
+                  "quality", "total"):
         check(phase in statistics["seconds"], "stats lacks seconds of " + phase)
     check(statistics.get("coloring") == "greedy-lu", "default colouring in stats")
     check(statistics.get("partitionByRegion") is False, "partitionByRegion default in stats")

@@ -5,6 +5,7 @@
 
 #include "Core/Status.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 
@@ -24,6 +25,20 @@ inline Status runSerially(std::int64_t count, const std::function<void(std::int6
     body(i);
   }
   return Status::success();
+}
+
+// A range size for loops that only copy or fill a few values per index.
+constexpr std::int64_t IndicesPerCopyRange = 65536;
+
+// Runs body(begin, end) over consecutive ranges of at most `rangeSize` indices that cover
+// [0, count), through `parallelFor`: loops over millions of cells or points whose per-index work
+// is too small to be scheduled one index at a time.
+inline Status forEachRange(const ParallelFor& parallelFor, std::int64_t count,
+  std::int64_t rangeSize, const std::function<void(std::int64_t, std::int64_t)>& body)
+{
+  const std::int64_t ranges = (count + rangeSize - 1) / rangeSize;
+  return parallelFor(ranges,
+    [&](std::int64_t range) { body(range * rangeSize, std::min(count, (range + 1) * rangeSize)); });
 }
 
 } // namespace cgmesh
