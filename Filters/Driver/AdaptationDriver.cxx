@@ -75,7 +75,8 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   }
   else if (plan.partitioner == PartitionerKind::Hilbert)
   {
-    status = partitionAlongHilbertCurve(input, plan.partitions, partitionOfCell);
+    status = partitionAlongHilbertCurve(
+      input, plan.partitions, partitionOfCell, parallelForOn(plan.threads));
   }
   else
   {

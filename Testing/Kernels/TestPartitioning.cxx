@@ -4,6 +4,7 @@
 // of the improvement sweeps: every tet in one box (or settled) in the order a serial pass gives,
 // whatever the schedule, the others left in place, and a box graph holding every pair of boxes that
 // share a point.
+#include "Core/ParallelSort.h"
 #include "CubeGenerator.h"
 #include "Partitioning/BoxPartitions.h"
 #include "Partitioning/HilbertPartitioner.h"
@@ -94,6 +95,40 @@ void test_hilbert_curve_visits_every_cell_through_faces()
   }
 }
 
+// Runs the calls last to first: a result that depended on the schedule would differ.
+Status runBackwards(std::int64_t count, const std::function<void(std::int64_t)>& body)
+{
+  for (std::int64_t i = count - 1; i >= 0; --i)
+  {
+    body(i);
+  }
+  return Status::success();
+}
+
+// Sorted in ranges and merged, under either schedule, the keys come out as std::sort orders them:
+// counts below, at and above the ranged sort's threshold, and uneven last ranges.
+void test_parallel_sort_matches_sort()
+{
+  for (const std::int64_t count : { 0L, 1000L, 131072L, 131073L, 400003L })
+  {
+    std::vector<std::pair<std::uint64_t, CellId>> keys(count);
+    std::uint64_t state = 12345;
+    for (std::int64_t i = 0; i < count; ++i)
+    {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      keys[i] = { state >> 44, i }; // 20-bit keys: many repeat, ties broken by the id
+    }
+    std::vector<std::pair<std::uint64_t, CellId>> expected = keys;
+    std::sort(expected.begin(), expected.end());
+    for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
+    {
+      std::vector<std::pair<std::uint64_t, CellId>> sorted = keys;
+      CHECK(sortInParallel(sorted, parallelFor).ok());
+      CHECK(sorted == expected);
+    }
+  }
+}
+
 void test_hilbert_partitions_are_equal_runs()
 {
   TetMesh mesh;
@@ -116,19 +151,16 @@ void test_hilbert_partitions_are_equal_runs()
       CHECK(count == fewest || count == fewest + 1);
     }
   }
+  // Above the ranged sort's threshold, a backward schedule gives the same partitions.
+  TetMesh larger;
+  CHECK(generateKuhnCube(30, larger).ok()); // 162,000 tets
+  std::vector<int> serial, backwards;
+  CHECK(partitionAlongHilbertCurve(larger, 1024, serial).ok());
+  CHECK(partitionAlongHilbertCurve(larger, 1024, backwards, runBackwards).ok());
+  CHECK(serial == backwards);
   std::vector<int> partitionOfCell;
   CHECK(!partitionAlongHilbertCurve(mesh, 10369, partitionOfCell).ok());
   CHECK(!partitionAlongHilbertCurve(mesh, 0, partitionOfCell).ok());
-}
-
-// Runs the calls last to first: a result that depended on the schedule would differ.
-Status runBackwards(std::int64_t count, const std::function<void(std::int64_t)>& body)
-{
-  for (std::int64_t i = count - 1; i >= 0; --i)
-  {
-    body(i);
-  }
-  return Status::success();
 }
 
 // A Kuhn cube with its interior points moved off the grid, cut into Hilbert partitions.
@@ -277,6 +309,7 @@ int main()
 {
   test_flat_and_hierarchical();
   test_hilbert_curve_visits_every_cell_through_faces();
+  test_parallel_sort_matches_sort();
   test_hilbert_partitions_are_equal_runs();
   test_box_regrouping_keeps_every_tet_in_serial_order();
   test_box_graph_holds_every_shared_point();

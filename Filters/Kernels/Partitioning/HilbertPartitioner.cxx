@@ -2,6 +2,8 @@
 
 #include "Partitioning/MeshPartitioner.h"
 
+#include "Core/ParallelSort.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -54,8 +56,8 @@ std::uint64_t hilbertIndex(std::array<std::uint32_t, 3> cell, int bits)
   return index;
 }
 
-Status partitionAlongHilbertCurve(
-  const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell)
+Status partitionAlongHilbertCurve(const TetMesh& mesh, int numberOfPartitions,
+  std::vector<int>& partitionOfCell, const ParallelFor& parallelFor)
 {
   const CellId tetCount = mesh.numberOfTets();
   partitionOfCell.assign(tetCount, 0);
@@ -66,48 +68,82 @@ Status partitionAlongHilbertCurve(
   }
 
   // Centroids (times 4) on one cubic grid over the tets' bounding box, so that the curve keeps
-  // the same resolution along every axis.
+  // the same resolution along every axis. Each range keeps its own box; min and max do not care
+  // in which order the ranges are joined.
+  using Box = std::array<std::array<double, 3>, 2>;
+  constexpr double Infinity = std::numeric_limits<double>::infinity();
+  const std::int64_t rangeSize = IndicesPerCopyRange;
+  std::vector<Box> boxOfRange((tetCount + rangeSize - 1) / rangeSize,
+    Box{ { { Infinity, Infinity, Infinity }, { -Infinity, -Infinity, -Infinity } } });
   std::vector<std::array<double, 3>> centroids(tetCount);
-  std::array<double, 3> low, high;
-  low.fill(std::numeric_limits<double>::infinity());
-  high.fill(-std::numeric_limits<double>::infinity());
-  for (CellId t = 0; t < tetCount; ++t)
+  Status status = forEachRange(parallelFor, tetCount, rangeSize,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      Box& box = boxOfRange[begin / rangeSize];
+      for (CellId t = begin; t < end; ++t)
+      {
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          double sum = 0;
+          for (PointId corner : mesh.tets[t])
+          {
+            sum += mesh.point(corner)[axis];
+          }
+          centroids[t][axis] = sum;
+          box[0][axis] = std::min(box[0][axis], sum);
+          box[1][axis] = std::max(box[1][axis], sum);
+        }
+      }
+    });
+  std::array<double, 3> low = boxOfRange[0][0], high = boxOfRange[0][1];
+  for (const Box& box : boxOfRange)
   {
     for (int axis = 0; axis < 3; ++axis)
     {
-      double sum = 0;
-      for (PointId corner : mesh.tets[t])
-      {
-        sum += mesh.point(corner)[axis];
-      }
-      centroids[t][axis] = sum;
-      low[axis] = std::min(low[axis], sum);
-      high[axis] = std::max(high[axis], sum);
+      low[axis] = std::min(low[axis], box[0][axis]);
+      high[axis] = std::max(high[axis], box[1][axis]);
     }
   }
   constexpr int Bits = 21;
   constexpr double LastCell = (1u << Bits) - 1;
   const double extent = std::max({ high[0] - low[0], high[1] - low[1], high[2] - low[2], 1e-300 });
   std::vector<std::pair<std::uint64_t, CellId>> order(tetCount);
-  for (CellId t = 0; t < tetCount; ++t)
+  if (status.ok())
   {
-    std::array<std::uint32_t, 3> cell;
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      const double scaled = (centroids[t][axis] - low[axis]) / extent * LastCell;
-      cell[axis] = static_cast<std::uint32_t>(std::clamp(scaled, 0.0, LastCell));
-    }
-    order[t] = { hilbertIndex(cell, Bits), t };
+    status = forEachRange(parallelFor, tetCount, rangeSize,
+      [&](std::int64_t begin, std::int64_t end)
+      {
+        for (CellId t = begin; t < end; ++t)
+        {
+          std::array<std::uint32_t, 3> cell;
+          for (int axis = 0; axis < 3; ++axis)
+          {
+            const double scaled = (centroids[t][axis] - low[axis]) / extent * LastCell;
+            cell[axis] = static_cast<std::uint32_t>(std::clamp(scaled, 0.0, LastCell));
+          }
+          order[t] = { hilbertIndex(cell, Bits), t };
+        }
+      });
   }
-  std::sort(order.begin(), order.end());
+  if (status.ok())
+  {
+    status = sortInParallel(order, parallelFor);
+  }
+  if (!status.ok())
+  {
+    return status;
+  }
 
   // Run r holds the tets at positions [r n / k, (r + 1) n / k).
-  for (CellId position = 0; position < tetCount; ++position)
-  {
-    partitionOfCell[order[position].second] =
-      static_cast<int>(position * numberOfPartitions / tetCount);
-  }
-  return Status::success();
+  return forEachRange(parallelFor, tetCount, rangeSize,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (CellId position = begin; position < end; ++position)
+      {
+        partitionOfCell[order[position].second] =
+          static_cast<int>(position * numberOfPartitions / tetCount);
+      }
+    });
 }
 
 } // namespace cgmesh

@@ -6,6 +6,7 @@
 #define cgmesh_HilbertPartitioner_h
 
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 
 #include <array>
@@ -20,9 +21,10 @@ namespace cgmesh
 std::uint64_t hilbertIndex(std::array<std::uint32_t, 3> cell, int bits);
 
 // Assigns every tet a partition in [0, numberOfPartitions): the tets ordered by the Hilbert index
-// of their centroid (ties by tet id) are cut into runs of equal size. Deterministic.
-Status partitionAlongHilbertCurve(
-  const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell);
+// of their centroid (ties by tet id) are cut into runs of equal size. Deterministic: `parallelFor`
+// runs the keys and the sort in ranges, and the result does not depend on it.
+Status partitionAlongHilbertCurve(const TetMesh& mesh, int numberOfPartitions,
+  std::vector<int>& partitionOfCell, const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 } // namespace cgmesh
 
