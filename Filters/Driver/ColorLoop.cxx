@@ -106,26 +106,43 @@ Status numberNewPoints(
     firstId[i] = next;
     next += static_cast<PointId>(iteration.refinements[members[i]].newPointSources.size());
   }
+  // The global arrays grow once; each partition then copies its points into its own range. The
+  // sources of new points only serve point-data provenance: without it they are not gathered.
+  const bool keepSources = iteration.options.pointProvenance;
+  state.coordinates.resize(3 * next);
+  if (iteration.setup.sizeField)
+  {
+    state.sizes.resize(next);
+  }
+  if (keepSources)
+  {
+    state.newPointSources.resize(next - state.inputPointCount);
+  }
   Status status = runParallel(iteration.setup.threads, static_cast<std::int64_t>(members.size()),
     [&](std::int64_t i)
     {
       const int p = members[i];
-      finalizeNewPoints(state.partitions[p], iteration.refinements[p], firstId[i]);
+      PartitionRefinement& refinement = iteration.refinements[p];
+      finalizeNewPoints(state.partitions[p], refinement, firstId[i]);
+      std::copy(refinement.newCoordinates.begin(), refinement.newCoordinates.end(),
+        state.coordinates.begin() + 3 * firstId[i]);
+      std::copy(
+        refinement.newSizes.begin(), refinement.newSizes.end(), state.sizes.begin() + firstId[i]);
+      if (keepSources)
+      {
+        std::copy(refinement.newPointSources.begin(), refinement.newPointSources.end(),
+          state.newPointSources.begin() + (firstId[i] - state.inputPointCount));
+      }
+      refinement.newCoordinates = std::vector<double>();
+      refinement.newSizes = std::vector<double>();
+      refinement.newPointSources = std::vector<PointSource>();
     });
   for (int p : members)
   {
     PartitionRefinement& refinement = iteration.refinements[p];
-    state.coordinates.insert(
-      state.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
-    state.sizes.insert(state.sizes.end(), refinement.newSizes.begin(), refinement.newSizes.end());
-    state.newPointSources.insert(state.newPointSources.end(), refinement.newPointSources.begin(),
-      refinement.newPointSources.end());
     state.movedPoints.insert(
       state.movedPoints.end(), refinement.movedPoints.begin(), refinement.movedPoints.end());
     refinement.movedPoints.clear();
-    refinement.newCoordinates = std::vector<double>();
-    refinement.newSizes = std::vector<double>();
-    refinement.newPointSources = std::vector<PointSource>();
   }
   return status;
 }

@@ -46,7 +46,8 @@ struct RelocationInput
   const std::vector<PointId>* movedPoints = nullptr;
 };
 
-// `withProvenance` false leaves merged.provenance empty (nothing to interpolate). `pointSizes`
+// `withProvenance` false leaves merged.provenance empty (nothing to interpolate); then
+// `newPointSources` is not read and may be empty. `pointSizes`
 // (one size per global point) gives merged.mesh.sizes. `parallelFor` runs the per-partition
 // copies of the tets; the output does not depend on it.
 
