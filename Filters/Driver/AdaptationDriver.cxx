@@ -25,36 +25,71 @@ namespace
 {
 
 // Flags output tets (in merge order: partition by partition) that touch a former interface vertex.
-std::vector<char> markNearFormerInterface(
-  const std::vector<PartitionMesh>& partitions, const std::vector<char>& formerInterface)
+// Per tet, in partition order (the merged mesh's), whether it touches a former interface vertex.
+Status markNearFormerInterface(const std::vector<PartitionMesh>& partitions,
+  const std::vector<char>& formerInterface, int threads, std::vector<char>& near)
 {
-  std::vector<char> near;
-  for (const PartitionMesh& partition : partitions)
+  std::vector<std::size_t> first(partitions.size() + 1, 0);
+  for (std::size_t p = 0; p < partitions.size(); ++p)
   {
-    for (const Tet& tet : partition.tets)
-    {
-      near.push_back(touchesFlaggedPoint(tet, formerInterface) ? 1 : 0);
-    }
+    first[p + 1] = first[p] + partitions[p].tets.size();
   }
-  return near;
+  near.assign(first.back(), 0);
+  return runParallel(threads, static_cast<std::int64_t>(partitions.size()),
+    [&](std::int64_t p)
+    {
+      for (std::size_t t = 0; t < partitions[p].tets.size(); ++t)
+      {
+        near[first[p] + t] = touchesFlaggedPoint(partitions[p].tets[t], formerInterface) ? 1 : 0;
+      }
+    });
 }
 
-void distributeTets(
-  const TetMesh& input, const std::vector<int>& partitionOfCell, AdaptationState& state)
+// Every input tet to its partition, in input order: a counting sort of the tet ids by partition,
+// then each partition copies its own tets.
+Status distributeTets(const TetMesh& input, const std::vector<int>& partitionOfCell, int threads,
+  AdaptationState& state)
 {
-  for (CellId t = 0; t < input.numberOfTets(); ++t)
+  const std::size_t partitions = state.partitions.size();
+  std::vector<CellId> first(partitions + 1, 0);
+  for (const int p : partitionOfCell)
   {
-    PartitionMesh& partition = state.partitions[partitionOfCell[t]];
-    partition.tets.push_back(input.tets[t]);
-    partition.parentCells.push_back(t);
-    if (input.hasRegions())
+    ++first[p + 1];
+  }
+  for (std::size_t p = 0; p < partitions; ++p)
+  {
+    first[p + 1] += first[p];
+  }
+  std::vector<CellId> tetsByPartition(partitionOfCell.size());
+  {
+    std::vector<CellId> next(first.begin(), first.end() - 1);
+    for (CellId t = 0; t < input.numberOfTets(); ++t)
     {
-      partition.regions.push_back(input.regions[t]);
+      tetsByPartition[next[partitionOfCell[t]]++] = t;
     }
   }
   state.coordinates = input.coordinates;
   state.sizes = input.sizes;
   state.inputPointCount = input.numberOfPoints();
+  return runParallel(threads, static_cast<std::int64_t>(partitions),
+    [&](std::int64_t p)
+    {
+      PartitionMesh& partition = state.partitions[p];
+      const std::size_t count = static_cast<std::size_t>(first[p + 1] - first[p]);
+      partition.tets.resize(count);
+      partition.parentCells.assign(
+        tetsByPartition.begin() + first[p], tetsByPartition.begin() + first[p + 1]);
+      partition.regions.resize(input.hasRegions() ? count : 0);
+      for (std::size_t k = 0; k < count; ++k)
+      {
+        const CellId t = partition.parentCells[k];
+        partition.tets[k] = input.tets[t];
+        if (input.hasRegions())
+        {
+          partition.regions[k] = input.regions[t];
+        }
+      }
+    });
 }
 
 Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
@@ -178,7 +213,7 @@ void attachTetGen(const AdaptationOptions& options, ColorLoopSetup& setup,
   };
 }
 
-void adoptMergedMesh(
+Status adoptMergedMesh(
   MergedMesh& merged, const std::vector<int>& partitionOfInputCell, AdaptationResult& result)
 {
   AdaptationSummary& summary = result.summary;
@@ -186,15 +221,31 @@ void adoptMergedMesh(
   result.parentCell = std::move(merged.parentCell);
   result.provenance = std::move(merged.provenance);
   // A tet was refined by the partition of the input tet it comes from (the improvement sweep
-  // regroups tets but refines nothing).
-  result.partitionOfCell.resize(result.parentCell.size());
-  result.colorOfCell.resize(result.parentCell.size());
+  // regroups tets but refines nothing). Cells per colour are counted per range, then summed.
+  const std::int64_t tets = static_cast<std::int64_t>(result.parentCell.size());
+  result.partitionOfCell.resize(tets);
+  result.colorOfCell.resize(tets);
+  const std::int64_t ranges = (tets + IndicesPerCopyRange - 1) / IndicesPerCopyRange;
+  std::vector<std::vector<std::int64_t>> cellsPerColorOfRange(
+    ranges, std::vector<std::int64_t>(summary.numberOfColors, 0));
+  const Status status = forEachRange(parallelForOn(summary.plan.threads), tets, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      std::vector<std::int64_t>& cellsPerColor = cellsPerColorOfRange[begin / IndicesPerCopyRange];
+      for (std::int64_t t = begin; t < end; ++t)
+      {
+        result.partitionOfCell[t] = partitionOfInputCell[result.parentCell[t]];
+        result.colorOfCell[t] = summary.colorOfPartition[result.partitionOfCell[t]];
+        ++cellsPerColor[result.colorOfCell[t]];
+      }
+    });
   summary.cellsPerColor.assign(summary.numberOfColors, 0);
-  for (std::size_t t = 0; t < result.partitionOfCell.size(); ++t)
+  for (const std::vector<std::int64_t>& cellsPerColor : cellsPerColorOfRange)
   {
-    result.partitionOfCell[t] = partitionOfInputCell[result.parentCell[t]];
-    result.colorOfCell[t] = summary.colorOfPartition[result.partitionOfCell[t]];
-    ++summary.cellsPerColor[result.colorOfCell[t]];
+    for (int color = 0; color < summary.numberOfColors; ++color)
+    {
+      summary.cellsPerColor[color] += cellsPerColor[color];
+    }
   }
   // Each collapse leaves exactly one vertex unused: those are coarsening, not the input's fault.
   const PointId unused = merged.removedPoints - static_cast<PointId>(summary.edgeCollapses);
@@ -203,6 +254,7 @@ void adoptMergedMesh(
     summary.warnings.push_back({ WarningKind::UnusedPointsRemoved, -1,
       "removed " + std::to_string(unused) + " points that no tetrahedron uses" });
   }
+  return status;
 }
 
 // Refinement (and improvement inside partitions), then the sweeps across former interfaces.
@@ -255,7 +307,11 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   reporter.enter(Phase::Prepare);
   AdaptationState state;
   state.partitions.resize(summary.plan.partitions);
-  distributeTets(input, partitionOfCell, state);
+  status = distributeTets(input, partitionOfCell, summary.plan.threads, state);
+  if (!status.ok())
+  {
+    return status;
+  }
   ColorLoopSetup setup = refinementSetup(options, summary, graph);
   std::unique_ptr<TetGenWorkerPool> tetgenWorkers;
   std::mutex serialTetGen;
@@ -280,18 +336,26 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   }
 
   reporter.enter(Phase::Merge);
-  result.nearFormerInterface = markNearFormerInterface(state.partitions, formerInterface);
+  status = markNearFormerInterface(
+    state.partitions, formerInterface, summary.plan.threads, result.nearFormerInterface);
   MergedMesh merged;
-  status = mergePartitions(state.partitions, state.coordinates, state.inputPointCount,
-    state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints },
-    options.pointProvenance, summary.plan.sizeField ? &state.sizes : nullptr,
-    parallelForOn(summary.plan.threads));
+  if (status.ok())
+  {
+    status = mergePartitions(state.partitions, state.coordinates, state.inputPointCount,
+      state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints },
+      options.pointProvenance, summary.plan.sizeField ? &state.sizes : nullptr,
+      parallelForOn(summary.plan.threads));
+  }
   if (!status.ok())
   {
     return status;
   }
   state = AdaptationState(); // the partitions are in `merged` now
-  adoptMergedMesh(merged, partitionOfCell, result);
+  status = adoptMergedMesh(merged, partitionOfCell, result);
+  if (!status.ok())
+  {
+    return status;
+  }
   if (result.mesh.hasSizes())
   {
     result.edgeLengthRatio = edgeLengthRatios(result.mesh);
