@@ -8,14 +8,27 @@ colour of every partition (`colorOfPartition`), the expected run time on T threa
     serial + sum over iterations and colours of makespan(tasks of that colour, T) + rest / T
 
 where makespan is greedy list scheduling with the longest task first (LPT) on T threads,
-`serial` is the phases that run on one thread (partition, graph, color, post, merge) counted
-once, and `rest` is the remainder of the measured total (heal, improve, quality and whatever
-of adapt lies outside the tasks) taken as perfectly parallel. With T = 1 the model gives back
-the measured total exactly.
+`serial` is the seconds that run on one thread, counted once, and `rest` is the remainder of the
+measured total (whatever of adapt lies outside the tasks included) taken as perfectly parallel.
+
+`serial` is measured where a 2-thread run of the same configuration is given: per phase,
+Amdahl's law t(T) = s + p / T through the 1- and 2-thread seconds gives s = 2 t(2) - t(1),
+clamped to [0, t(1)] (the colour loop's adapt phase is left to the task model). Without one, the
+phases that have serial parts (SERIAL_PHASES) count as serial whole. With T = 1 the model gives
+back the measured total exactly.
 """
 import heapq
 
-SERIAL_PHASES = ("partition", "graph", "color", "post", "merge")
+SERIAL_PHASES = ("prepare", "partition", "graph", "color", "post", "merge", "input")
+NOT_PHASES = ("total", "read", "write", "adapt")
+
+
+def serial_seconds(seconds, seconds_at_2):
+    """Seconds on one thread: the Amdahl fit per phase with a 2-thread run, else SERIAL_PHASES."""
+    if seconds_at_2 is None:
+        return sum(seconds.get(phase, 0.0) for phase in SERIAL_PHASES)
+    return sum(min(seconds[phase], max(0.0, 2.0 * seconds_at_2.get(phase, 0.0) - seconds[phase]))
+               for phase in seconds if phase not in NOT_PHASES)
 
 
 def lpt_makespan(tasks, threads):
@@ -45,10 +58,11 @@ def colour_groups(task_seconds, colour_of_partition, partitions):
     return groups
 
 
-def simulate(stats, thread_counts):
+def simulate(stats, thread_counts, stats_at_2=None):
     """Model of one run (its stats JSON, normally the 1-thread run): a dict with the serial,
     task and rest seconds and, per thread count, the modelled seconds and speedup over the
-    measured total. None when the stats lack the per-partition task times."""
+    measured total. `stats_at_2`, the same configuration's 2-thread run, measures the serial
+    seconds. None when the stats lack the per-partition task times."""
     tasks = stats.get("partitionTaskSeconds")
     colours = stats.get("colorOfPartition")
     if not tasks or not colours:
@@ -56,11 +70,12 @@ def simulate(stats, thread_counts):
     seconds = stats["seconds"]
     partitions = len(colours)
     groups = colour_groups(tasks, colours, partitions)
-    serial = sum(seconds.get(phase, 0.0) for phase in SERIAL_PHASES)
+    serial = serial_seconds(seconds, stats_at_2["seconds"] if stats_at_2 else None)
     task_total = float(sum(tasks))
     rest = max(0.0, seconds["total"] - serial - task_total)
     measured_threads = stats.get("threads", 1)
     model = {"measuredThreads": measured_threads, "measuredTotal": seconds["total"],
+             "serialMeasured": stats_at_2 is not None,
              "serialSeconds": serial, "taskSeconds": task_total, "restSeconds": rest,
              "longestTask": max(tasks), "steps": len(groups), "threads": {}}
     for threads in thread_counts:
