@@ -110,9 +110,11 @@ Status numberNewPoints(
   // sources of new points only serve point-data provenance: without it they are not gathered.
   const bool keepSources = iteration.options.pointProvenance;
   state.coordinates.resize(3 * next);
-  if (iteration.setup.sizeField)
+  const bool withSizes = std::any_of(members.begin(), members.end(),
+    [&](int p) { return !iteration.refinements[p].newSizes.empty(); });
+  if (withSizes)
   {
-    state.sizes.resize(next);
+    state.sizes.resize(next); // new points carry sizes only where every point has one
   }
   if (keepSources)
   {
