@@ -110,6 +110,7 @@ void copyCellData(vtkCellData* input, vtkIdType numberOfCells,
       static_cast<std::size_t>(target->GetDataTypeSize()) * target->GetNumberOfComponents();
     const char* from = static_cast<const char*>(source->GetVoidPointer(0));
     char* to = static_cast<char*>(target->GetVoidPointer(0));
+    // The ranges only copy bytes into a sized array: they cannot fail, so no Status to pass on.
     forEachRange(parallelFor, numberOfCells, IndicesPerCopyRange,
       [&](std::int64_t begin, std::int64_t end)
       {

@@ -53,8 +53,9 @@ CGMESHFILTERS_EXPORT Status convertToTetMesh(vtkUnstructuredGrid* grid,
 
 // Replaces the geometry of `grid` with `mesh` (double points, VTK_TETRA cells). When the mesh has
 // regions and `regionArrayName` is not empty, they are stored as an int cell array of that name.
-// `parallelFor` fills the arrays in ranges: the first write to a fresh page costs more than the
-// copy itself, and it is done by the thread that writes it.
+// `parallelFor` fills the arrays in ranges (plain copies into sized arrays, which cannot fail):
+// the first write to a fresh page costs more than the copy itself, and it is done by the thread
+// that writes it.
 CGMESHFILTERS_EXPORT void convertToUnstructuredGrid(const TetMesh& mesh, vtkUnstructuredGrid* grid,
   const std::string& regionArrayName = std::string(),
   const ParallelFor& parallelFor = ParallelFor(runSerially));

@@ -25,7 +25,6 @@ namespace
 {
 
 // Flags output tets (in merge order: partition by partition) that touch a former interface vertex.
-// Per tet, in partition order (the merged mesh's), whether it touches a former interface vertex.
 Status markNearFormerInterface(const std::vector<PartitionMesh>& partitions,
   const std::vector<char>& formerInterface, int threads, std::vector<char>& near)
 {

@@ -128,8 +128,11 @@ Status numberNewPoints(
       finalizeNewPoints(state.partitions[p], refinement, firstId[i]);
       std::copy(refinement.newCoordinates.begin(), refinement.newCoordinates.end(),
         state.coordinates.begin() + 3 * firstId[i]);
-      std::copy(
-        refinement.newSizes.begin(), refinement.newSizes.end(), state.sizes.begin() + firstId[i]);
+      if (withSizes)
+      {
+        std::copy(
+          refinement.newSizes.begin(), refinement.newSizes.end(), state.sizes.begin() + firstId[i]);
+      }
       if (keepSources)
       {
         std::copy(refinement.newPointSources.begin(), refinement.newPointSources.end(),
