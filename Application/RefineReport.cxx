@@ -259,6 +259,7 @@ void collectFilterStatistics(
   statistics.tetgenPoints = summary.tetgenPoints;
   statistics.tetgenRetries = summary.tetgenRetries;
   statistics.tetgenWithoutQualityBound = summary.tetgenWithoutQualityBound;
+  statistics.tetgenRemeshed = summary.tetgenRemeshed;
   statistics.partitionsPerColor = summary.partitionsPerColor;
   statistics.cellsPerColor = summary.cellsPerColor;
   statistics.colorBalance = summary.colorBalance;
@@ -334,6 +335,7 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
            << std::setw(24) << "tetgen points" << statistics.tetgenPoints << "\n"
            << std::setw(24) << "tetgen retries" << statistics.tetgenRetries << "\n"
            << std::setw(24) << "tetgen without q" << statistics.tetgenWithoutQualityBound << "\n"
+           << std::setw(24) << "tetgen remeshed" << statistics.tetgenRemeshed << "\n"
            << std::setw(24) << "delaunay fallbacks" << statistics.delaunayFallbacks
            << (statistics.fallbackPartitions.empty()
                   ? std::string()
@@ -399,6 +401,7 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"tetgenPoints\": " << statistics.tetgenPoints << ",\n"
        << "  \"tetgenRetries\": " << statistics.tetgenRetries << ",\n"
        << "  \"tetgenWithoutQualityBound\": " << statistics.tetgenWithoutQualityBound << ",\n"
+       << "  \"tetgenRemeshed\": " << statistics.tetgenRemeshed << ",\n"
        << "  \"delaunayFallbacks\": " << statistics.delaunayFallbacks << ",\n"
        << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ") << "],\n"
        << "  \"compression\": " << jsonString(statistics.compression) << ",\n";

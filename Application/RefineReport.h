@@ -56,6 +56,7 @@ struct RefineStatistics
   std::int64_t tetgenPoints = 0;                // Steiner points TetGen inserted
   std::int64_t tetgenRetries = 0;               // partitions TetGen needed a second attempt for
   std::int64_t tetgenWithoutQualityBound = 0;   // of those, refined without the radius-edge bound
+  std::int64_t tetgenRemeshed = 0;              // partitions meshed anew from their kept faces
   bool partitionByRegion = false;
   int partitionsPerRegion = 1;
   std::string coloring;

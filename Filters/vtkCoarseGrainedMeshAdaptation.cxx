@@ -133,6 +133,7 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "TetGenRetries", static_cast<double>(result.tetgenRetries));
   addFieldValue(
     fieldData, "TetGenWithoutQualityBound", static_cast<double>(result.tetgenWithoutQualityBound));
+  addFieldValue(fieldData, "TetGenRemeshed", static_cast<double>(result.tetgenRemeshed));
   addFieldValue(fieldData, "ColoringAlgorithmIndex", filter->GetColoringAlgorithm());
   // The partitioner used: Automatic resolved to METIS or Hilbert.
   addFieldValue(fieldData, "PartitionerIndex", static_cast<int>(result.plan.partitioner));

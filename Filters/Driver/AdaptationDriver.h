@@ -39,8 +39,9 @@ struct AdaptationSummary
   bool refinementConverged = false;
   std::int64_t tetgenRetries = 0; // partition refinements whose first TetGen call failed
   std::int64_t tetgenWithoutQualityBound = 0; // of those, refined by TetGen without q
-  bool concurrentTetGen = false;              // TetGen calls overlapped (in worker processes)
-  std::int64_t reorientedTets = 0;            // inverted input tets that were turned around
+  std::int64_t tetgenRemeshed = 0;  // partitions TetGen meshed anew from their kept faces (slivers)
+  bool concurrentTetGen = false;    // TetGen calls overlapped (in worker processes)
+  std::int64_t reorientedTets = 0;  // inverted input tets that were turned around
   std::int64_t gluedPoints = 0;     // copies of matching faces' corners merged into one point
   std::int64_t keptApartPoints = 0; // input points left distinct from a coincident one
   std::int64_t edgeRemovals = 0;    // quality improvement operations

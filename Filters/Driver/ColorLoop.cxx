@@ -83,6 +83,7 @@ void recordReports(const std::vector<int>& members, const std::vector<TaskReport
     summary.tetgenPoints += report.delaunay.tetgenPoints;
     summary.tetgenRetries += report.delaunay.retried ? 1 : 0;
     summary.tetgenWithoutQualityBound += report.delaunay.withoutQualityBound ? 1 : 0;
+    summary.tetgenRemeshed += report.delaunay.remeshed ? 1 : 0;
     if (report.delaunay.fellBack)
     {
       ++summary.delaunayFallbacks;

@@ -54,8 +54,45 @@ enum MeshParts : int
 {
   WithFaces = 1,      // the faces and their markers (a request)
   WithNeighbours = 2, // the face neighbours of each tet (a reply to TetGen's switch n)
-  WithPointSizes = 4  // one size per point (a request with TetGen's switch m)
+  WithPointSizes = 4, // one size per point (a request with TetGen's switch m)
+  WithFacets = 8,     // triangular facets, their markers and the region list (a request with p)
 };
+
+// The facets of a PLC made of single triangles, flattened: what the Delaunay method sends with
+// switch p. False for any other facet, which this protocol does not carry.
+bool flattenTriangleFacets(const tetgenio& io, std::vector<int>& corners)
+{
+  corners.clear();
+  for (int f = 0; f < io.numberoffacets; ++f)
+  {
+    const tetgenio::facet& facet = io.facetlist[f];
+    if (facet.numberofpolygons != 1 || facet.numberofholes != 0 ||
+      facet.polygonlist[0].numberofvertices != 3)
+    {
+      return false;
+    }
+    corners.insert(
+      corners.end(), facet.polygonlist[0].vertexlist, facet.polygonlist[0].vertexlist + 3);
+  }
+  return true;
+}
+
+void unflattenTriangleFacets(const int* corners, int count, tetgenio& io)
+{
+  io.numberoffacets = count;
+  io.facetlist = new tetgenio::facet[static_cast<std::size_t>(count)];
+  for (int f = 0; f < count; ++f)
+  {
+    tetgenio::facet& facet = io.facetlist[f];
+    tetgenio::init(&facet);
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(facet.polygonlist);
+    facet.polygonlist[0].numberofvertices = 3;
+    facet.polygonlist[0].vertexlist = new int[3];
+    std::copy_n(corners + 3 * f, 3, facet.polygonlist[0].vertexlist);
+  }
+}
 
 bool sendMesh(int socket, const tetgenio& io, int parts)
 {
@@ -66,6 +103,15 @@ bool sendMesh(int socket, const tetgenio& io, int parts)
   if ((parts & WithFaces) && io.pointmtrlist != nullptr && io.numberofpointmtrs == 1)
   {
     parts |= WithPointSizes;
+  }
+  std::vector<int> facetCorners;
+  if ((parts & WithFaces) && io.numberoffacets > 0)
+  {
+    if (!flattenTriangleFacets(io, facetCorners))
+    {
+      return false;
+    }
+    parts |= WithFacets;
   }
   const int header[4] = { io.numberofcorners, io.numberoftetrahedronattributes, io.firstnumber,
     parts };
@@ -80,6 +126,10 @@ bool sendMesh(int socket, const tetgenio& io, int parts)
     (!(parts & WithFaces) ||
       (sendArray(socket, io.trifacelist, 3 * static_cast<std::int64_t>(io.numberoftrifaces)) &&
         sendArray(socket, io.trifacemarkerlist, static_cast<std::int64_t>(io.numberoftrifaces)))) &&
+    (!(parts & WithFacets) ||
+      (sendArray(socket, facetCorners.data(), static_cast<std::int64_t>(facetCorners.size())) &&
+        sendArray(socket, io.facetmarkerlist, static_cast<std::int64_t>(io.numberoffacets)) &&
+        sendArray(socket, io.regionlist, 5 * static_cast<std::int64_t>(io.numberofregions)))) &&
     (!(parts & WithNeighbours) ||
       sendArray(socket, io.neighborlist, 4 * static_cast<std::int64_t>(io.numberoftetrahedra)));
 }
@@ -129,6 +179,22 @@ bool receiveMesh(int socket, tetgenio& io)
     {
       return false;
     }
+  }
+  if (parts & WithFacets)
+  {
+    int* corners = nullptr;
+    const bool facets = receiveArray(socket, corners, count) && count % 3 == 0;
+    if (facets)
+    {
+      unflattenTriangleFacets(corners, static_cast<int>(count / 3), io);
+    }
+    delete[] corners;
+    if (!facets || !receiveArray(socket, io.facetmarkerlist, count) || count != io.numberoffacets ||
+      !receiveArray(socket, io.regionlist, count) || count % 5 != 0)
+    {
+      return false;
+    }
+    io.numberofregions = static_cast<int>(count / 5);
   }
   if (parts & WithNeighbours)
   {
@@ -313,7 +379,9 @@ std::string TetGenWorkerPool::run(
   // TetGen can also loop forever on some inputs: a call that takes far longer than its size
   // warrants is abandoned (the limit applies to each receive).
   timeval limit;
-  limit.tv_sec = static_cast<time_t>(30.0 + 0.002 * in.numberoftetrahedra);
+  // A remeshed partition sends no tets: about six per point.
+  const double tets = in.numberoftetrahedra > 0 ? in.numberoftetrahedra : 6.0 * in.numberofpoints;
+  limit.tv_sec = static_cast<time_t>(30.0 + 0.002 * tets);
   limit.tv_usec = 0;
   ::setsockopt(worker.socket, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof(limit));
   const std::int32_t kind =

@@ -3,6 +3,7 @@
 // partitions, and the template fallback when TetGen fails or its worker process dies.
 #include "AdaptationDriver.h"
 #include "Core/Geometry.h"
+#include "Core/TetQuality.h"
 #include "CubeGenerator.h"
 #include "MeshChecks.h"
 #include "Refinement/TemplateTable.h"
@@ -44,6 +45,79 @@ TetMesh threeRegionCube(int n)
     mesh.regions.push_back(centroid[2] < 0.25 ? 10 : (centroid[0] + centroid[1] < 1 ? 20 : 30));
   }
   return mesh;
+}
+
+// A block with a cube inside, both materials filled by TetGen with pseudo-random points and no
+// quality bound: full of slivers, as unstructured meshes made without one are, while the faces of
+// both cubes are good triangles. Region 1 is the block around the inner cube, region 2 the cube.
+TetMesh sliverLadenBlock(int pointCount)
+{
+  tetgenio in, out;
+  in.numberofpoints = 16 + pointCount;
+  in.pointlist = new REAL[3 * in.numberofpoints];
+  std::uint64_t state = 12345;
+  for (int i = 0; i < in.numberofpoints; ++i)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const int corner = (i >> axis) & 1;
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      in.pointlist[3 * i + axis] = i < 8 ? corner
+        : i < 16                         ? 0.35 + 0.3 * corner
+                                         : static_cast<double>(state >> 11) / 9007199254740992.0;
+    }
+  }
+  // The six faces of each cube, as quadrilaterals of corner indices.
+  const int faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  in.numberoffacets = 12;
+  in.facetlist = new tetgenio::facet[12];
+  for (int f = 0; f < 12; ++f)
+  {
+    tetgenio::facet& facet = in.facetlist[f];
+    tetgenio::init(&facet);
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(facet.polygonlist);
+    facet.polygonlist[0].numberofvertices = 4;
+    facet.polygonlist[0].vertexlist = new int[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      facet.polygonlist[0].vertexlist[k] = faces[f % 6][k] + (f < 6 ? 0 : 8);
+    }
+  }
+  in.numberofregions = 2;
+  in.regionlist = new REAL[10]{ 0.1, 0.1, 0.1, 1, -1, 0.5, 0.5, 0.5, 2, -1 };
+  tetgenbehavior behaviour;
+  behaviour.parse_commandline(const_cast<char*>("pAQ"));
+  tetrahedralize(&behaviour, &in, &out);
+  TetMesh mesh;
+  mesh.coordinates.assign(out.pointlist, out.pointlist + 3 * out.numberofpoints);
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+  {
+    Tet tet;
+    std::copy_n(out.tetrahedronlist + 4 * t, 4, tet.begin());
+    if (signedVolume6(mesh, tet) < 0)
+    {
+      std::swap(tet[0], tet[1]);
+    }
+    mesh.tets.push_back(tet);
+    mesh.regions.push_back(static_cast<int>(std::lround(out.tetrahedronattributelist[t])));
+  }
+  return mesh;
+}
+
+// The share of tets whose smallest dihedral angle is below `degrees`.
+double shareBelow(
+  const std::vector<Tet>& tets, const std::vector<double>& coordinates, double degrees)
+{
+  std::size_t below = 0;
+  for (const Tet& tet : tets)
+  {
+    below += minimumDihedralAngle(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+               coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]) < degrees;
+  }
+  return static_cast<double>(below) / static_cast<double>(tets.size());
 }
 
 AdaptationOptions delaunayOptions(int threads, int iterations)
@@ -415,6 +489,115 @@ void test_tampered_tetgen_output_is_refused()
   CHECK_EQUAL(calls.size(), std::size_t(1));
 }
 
+// A partition full of slivers is meshed anew from its kept faces and points (switch p), not
+// refined (switch r): TetGen cannot split a kept face, and refining slivers that rest on them
+// costs it minutes and leaves worse ones. The partition encloses a cavity (tets of other
+// partitions), which TetGen fills too: those tets and their points must not come back.
+void test_sliver_laden_partition_is_meshed_anew_around_a_cavity()
+{
+  const TetMesh mesh = sliverLadenBlock(1500);
+  CHECK(shareBelow(mesh.tets, mesh.coordinates, RemeshSliverDegrees) > 10 * RemeshSliverShare);
+  PartitionMesh partition;
+  double cavityVolume = 0;
+  std::map<int, double> volumeOfRegion;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    const double volume = signedVolume6(mesh, mesh.tets[t]) / 6.0;
+    if (mesh.regions[t] == 2)
+    {
+      cavityVolume += volume;
+      continue;
+    }
+    partition.tets.push_back(mesh.tets[t]);
+    partition.regions.push_back(mesh.regions[t]);
+    partition.parentCells.push_back(t);
+    volumeOfRegion[mesh.regions[t]] += volume;
+  }
+  CHECK(cavityVolume > 0.01);
+  const TemplateTable templates;
+  const std::vector<char> interfaceVertex(mesh.numberOfPoints(), 0);
+  const DelaunayParameters parameters{ 0.5 / mesh.numberOfTets(), 2.0, false };
+  RefinementContext context;
+  context.coordinates = &mesh.coordinates;
+  context.interfaceVertex = &interfaceVertex;
+  context.templates = &templates;
+  const double interfaceLength = interfaceEdgeLengthForVolume(parameters.maximumVolume);
+  context.squaredThreshold = interfaceLength * interfaceLength;
+  TetGenWorkerPool pool(1);
+  const TetGenRunner runner = [&](const tetgenio& in, const std::string& switches, tetgenio& out)
+  {
+    CHECK(switches.rfind("pA", 0) == 0);
+    return pool.run(0, in, switches, out);
+  };
+  PartitionRefinement refinement;
+  DelaunayOutcome outcome;
+  const std::size_t inputTets = partition.tets.size();
+  CHECK(refinePartitionDelaunay(
+    partition, context, EdgeMidpointMap(), parameters, runner, refinement, outcome)
+          .ok());
+  CHECK(outcome.remeshed && !outcome.fellBack);
+  CHECK(partition.tets.size() > 2 * inputTets);
+
+  // Every point is the input's or one TetGen inserted and a tet uses; the cavity stays empty.
+  std::vector<double> coordinates = mesh.coordinates;
+  coordinates.insert(
+    coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
+  const auto globalOf = [&mesh](PointId p)
+  {
+    return p >= 0 ? p : mesh.numberOfPoints() - p - 1;
+  };
+  std::vector<char> used(coordinates.size() / 3, 0);
+  std::map<int, double> volumeAfter;
+  std::vector<Tet> tets;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    Tet tet;
+    for (int k = 0; k < 4; ++k)
+    {
+      tet[k] = globalOf(partition.tets[t][k]);
+      used[tet[k]] = 1;
+    }
+    const double volume =
+      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]);
+    CHECK(volume > 0);
+    volumeAfter[partition.regions[t]] += volume / 6.0;
+    tets.push_back(tet);
+  }
+  CHECK(std::count(used.begin() + mesh.numberOfPoints(), used.end(), 0) == 0);
+  CHECK_EQUAL(refinement.newPointSources.size(), refinement.newCoordinates.size() / 3);
+  CHECK_EQUAL(volumeAfter.size(), volumeOfRegion.size());
+  for (const auto& region : volumeOfRegion)
+  {
+    CHECK_CLOSE(volumeAfter[region.first], region.second, 1e-12);
+  }
+  // Meshed anew, the partition holds far fewer slivers than it was given.
+  const double before = shareBelow(mesh.tets, mesh.coordinates, RemeshSliverDegrees);
+  const double after = shareBelow(tets, coordinates, RemeshSliverDegrees);
+  std::cout << "share of tets under " << RemeshSliverDegrees << " degrees: " << before
+            << " before, " << after << " after\n";
+  CHECK(after < 0.25 * before);
+}
+
+// The whole method on a sliver-laden two-material mesh: conforming, conserving, the same for any
+// thread count, and its partitions meshed anew.
+void test_sliver_laden_mesh_conforms_across_threads()
+{
+  const TetMesh input = sliverLadenBlock(1500);
+  AdaptationOptions options = delaunayOptions(1, 1);
+  options.numberOfPartitions = 8;
+  options.volumeFactor = 0.5;
+  const AdaptationResult serial = run(input, options);
+  cgmesh_test::checkValidAndConserving(input, serial.mesh);
+  CHECK(serial.summary.tetgenRemeshed > 0);
+  CHECK(serial.mesh.numberOfTets() > 2 * input.numberOfTets());
+  std::cout << "sliver-laden block: " << serial.summary.tetgenRemeshed << " of "
+            << options.numberOfPartitions << " partitions meshed anew, "
+            << serial.summary.delaunayFallbacks << " fallbacks\n";
+  options.numberOfThreads = 2;
+  CHECK(cgmesh_test::identicalResults(serial, run(input, options)));
+}
+
 } // namespace
 
 int main()
@@ -426,5 +609,7 @@ int main()
   test_worker_deaths_fall_back_like_failures();
   test_bad_delaunay_options_are_refused();
   test_tampered_tetgen_output_is_refused();
+  test_sliver_laden_partition_is_meshed_anew_around_a_cavity();
+  test_sliver_laden_mesh_conforms_across_threads();
   return cgmesh_test::finish("TestDelaunay");
 }

@@ -1,7 +1,9 @@
 // Delaunay refinement of one partition: its interface and material-interface edges are first split
 // by templates (so neighbours can heal them through the outbox), then TetGen refines the interior
 // with every boundary and material-interface face kept as it is (switches r, Y, q, and a for a
-// volume bound or m for a size field: RefinementContext::sizes).
+// volume bound or m for a size field: RefinementContext::sizes). A partition full of slivers is
+// first meshed anew from its kept faces and points instead (switch p for r; see
+// RemeshSliverDegrees), and refined as any other where that fails.
 // A TetGen failure (a thrown int, or output that does not validate) never loses the partition: it
 // falls back to template refinement of the interior edges.
 #ifndef cgmesh_TetGenRefiner_h
@@ -33,6 +35,11 @@ double interfaceEdgeLengthForVolume(double maximumVolume);
 // measurement on the Big cube with a graded field (benchmarks/size-field): edges within
 // [h / sqrt(2), sqrt(2) h] peak near this value (see docs/design.md).
 constexpr double TetGenRadiusPerSize = 0.7;
+// A partition whose share of tets with a minimum dihedral angle below RemeshSliverDegrees exceeds
+// RemeshSliverShare (after its interface edges are split) is meshed anew by TetGen from its kept
+// faces and points instead of refined (see refinePartitionDelaunay).
+constexpr double RemeshSliverDegrees = 1.0;
+constexpr double RemeshSliverShare = 0.001;
 // About how many tets TetGen makes of `volume` under the bound: its tets average about a third
 // of the bound (measured on cubes and FinFETs). Used by the size guard and the partition count.
 double forecastDelaunayTets(double volume, double maximumVolume);
@@ -54,6 +61,7 @@ struct DelaunayOutcome
   bool fellBack = false;            // TetGen failed; the partition was template-refined instead
   bool retried = false;             // the first TetGen call failed, a second attempt was made
   bool withoutQualityBound = false; // refined by the last attempt, without the radius-edge bound
+  bool remeshed = false;            // meshed anew from its kept faces and points (switch p)
   std::string reason;               // why, when it fell back
   std::int64_t tetgenPoints = 0;    // Steiner points TetGen inserted
 };
