@@ -77,23 +77,6 @@ bool flattenTriangleFacets(const tetgenio& io, std::vector<int>& corners)
   return true;
 }
 
-void unflattenTriangleFacets(const int* corners, int count, tetgenio& io)
-{
-  io.numberoffacets = count;
-  io.facetlist = new tetgenio::facet[static_cast<std::size_t>(count)];
-  for (int f = 0; f < count; ++f)
-  {
-    tetgenio::facet& facet = io.facetlist[f];
-    tetgenio::init(&facet);
-    facet.numberofpolygons = 1;
-    facet.polygonlist = new tetgenio::polygon[1];
-    tetgenio::init(facet.polygonlist);
-    facet.polygonlist[0].numberofvertices = 3;
-    facet.polygonlist[0].vertexlist = new int[3];
-    std::copy_n(corners + 3 * f, 3, facet.polygonlist[0].vertexlist);
-  }
-}
-
 bool sendMesh(int socket, const tetgenio& io, int parts)
 {
   if (io.neighborlist == nullptr)
@@ -186,7 +169,7 @@ bool receiveMesh(int socket, tetgenio& io)
     const bool facets = receiveArray(socket, corners, count) && count % 3 == 0;
     if (facets)
     {
-      unflattenTriangleFacets(corners, static_cast<int>(count / 3), io);
+      setTriangleFacets(io, corners, static_cast<int>(count / 3));
     }
     delete[] corners;
     if (!facets || !receiveArray(socket, io.facetmarkerlist, count) || count != io.numberoffacets ||

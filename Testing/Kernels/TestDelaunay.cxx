@@ -369,21 +369,35 @@ void test_bad_delaunay_options_are_refused()
   CHECK(!adaptMesh(input, options, result).ok());
 }
 
+// What refinePartitionDelaunay() needs of a whole mesh handed over as one partition: no interface
+// vertices, the templates, and the interface length of the volume bound.
+struct PartitionSetting
+{
+  PartitionSetting(const TetMesh& mesh, const DelaunayParameters& parameters)
+    : interfaceVertex(mesh.numberOfPoints(), 0)
+  {
+    context.coordinates = &mesh.coordinates;
+    context.interfaceVertex = &this->interfaceVertex;
+    context.templates = &this->templates;
+    const double interfaceLength = interfaceEdgeLengthForVolume(parameters.maximumVolume);
+    context.squaredThreshold = interfaceLength * interfaceLength;
+  }
+  PartitionSetting(const PartitionSetting&) = delete;
+
+  const TemplateTable templates;
+  const std::vector<char> interfaceVertex;
+  RefinementContext context;
+};
+
 // TetGen's reply is checked, not trusted: face neighbours that do not name each other back, or
 // an interior face reported as hull, send the partition to the template fallback with the reason.
 void test_tampered_tetgen_output_is_refused()
 {
   TetMesh mesh;
   CHECK(generateKuhnCube(3, mesh).ok());
-  const TemplateTable templates;
-  const std::vector<char> interfaceVertex(mesh.numberOfPoints(), 0);
   const DelaunayParameters parameters{ 0.05 * (1.0 / mesh.numberOfTets()), 2.0, false };
-  RefinementContext context;
-  context.coordinates = &mesh.coordinates;
-  context.interfaceVertex = &interfaceVertex;
-  context.templates = &templates;
-  const double interfaceLength = interfaceEdgeLengthForVolume(parameters.maximumVolume);
-  context.squaredThreshold = interfaceLength * interfaceLength;
+  const PartitionSetting setting(mesh, parameters);
+  const RefinementContext& context = setting.context;
   TetGenWorkerPool pool(1);
 
   // `tamper` sees each TetGen call's switches and successful output; a reason it returns stands
@@ -514,15 +528,9 @@ void test_sliver_laden_partition_is_meshed_anew_around_a_cavity()
     volumeOfRegion[mesh.regions[t]] += volume;
   }
   CHECK(cavityVolume > 0.01);
-  const TemplateTable templates;
-  const std::vector<char> interfaceVertex(mesh.numberOfPoints(), 0);
   const DelaunayParameters parameters{ 0.5 / mesh.numberOfTets(), 2.0, false };
-  RefinementContext context;
-  context.coordinates = &mesh.coordinates;
-  context.interfaceVertex = &interfaceVertex;
-  context.templates = &templates;
-  const double interfaceLength = interfaceEdgeLengthForVolume(parameters.maximumVolume);
-  context.squaredThreshold = interfaceLength * interfaceLength;
+  const PartitionSetting setting(mesh, parameters);
+  const RefinementContext& context = setting.context;
   TetGenWorkerPool pool(1);
   const TetGenRunner runner = [&](const tetgenio& in, const std::string& switches, tetgenio& out)
   {

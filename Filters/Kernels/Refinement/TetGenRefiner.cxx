@@ -212,25 +212,19 @@ private:
   // largest attribute given, so any other attribute marks a cavity of other partitions.
   void fillFacetsAndRegions(tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order)
   {
-    in.numberoffacets = static_cast<int>(keptFaces.size());
-    in.facetlist = new tetgenio::facet[keptFaces.size()];
+    std::vector<int> faceCorners;
+    faceCorners.reserve(3 * keptFaces.size());
     in.facetmarkerlist = new int[keptFaces.size()];
     for (std::size_t f = 0; f < keptFaces.size(); ++f)
     {
       const std::size_t source = order.sourceOf(f);
-      tetgenio::facet& facet = in.facetlist[f];
-      tetgenio::init(&facet);
-      facet.numberofpolygons = 1;
-      facet.polygonlist = new tetgenio::polygon[1];
-      tetgenio::init(facet.polygonlist);
-      facet.polygonlist[0].numberofvertices = 3;
-      facet.polygonlist[0].vertexlist = new int[3];
-      for (int k = 0; k < 3; ++k)
+      for (PointId p : keptFaces[source])
       {
-        facet.polygonlist[0].vertexlist[k] = this->Numbering.localOfId.at(keptFaces[source][k]);
+        faceCorners.push_back(this->Numbering.localOfId.at(p));
       }
       in.facetmarkerlist[f] = static_cast<int>(source) + 1;
     }
+    setTriangleFacets(in, faceCorners.data(), static_cast<int>(keptFaces.size()));
     const std::vector<int> corners = this->localCorners();
     const std::vector<int> pieceOfTet = enclosedPieces(corners, this->KeptFaces);
     const int pieceCount =
@@ -684,6 +678,23 @@ double regularTetVolume(double edge)
 }
 
 } // namespace
+
+void setTriangleFacets(tetgenio& io, const int* corners, int count)
+{
+  io.numberoffacets = count;
+  io.facetlist = new tetgenio::facet[static_cast<std::size_t>(count)];
+  for (int f = 0; f < count; ++f)
+  {
+    tetgenio::facet& facet = io.facetlist[f];
+    tetgenio::init(&facet);
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(facet.polygonlist);
+    facet.polygonlist[0].numberofvertices = 3;
+    facet.polygonlist[0].vertexlist = new int[3];
+    std::copy_n(corners + 3 * f, 3, facet.polygonlist[0].vertexlist);
+  }
+}
 
 double forecastDelaunayTets(double volume, double maximumVolume)
 {

@@ -48,6 +48,10 @@ double forecastDelaunayTets(double volume, double maximumVolume);
 double forecastDelaunayTetsForSizes(const std::vector<Tet>& tets,
   const std::vector<double>& coordinates, const std::vector<double>& sizes);
 
+// Gives `io` `count` facets of one triangle each, their corners 3 per facet in `corners`: the PLC
+// of a partition meshed anew (switch p).
+void setTriangleFacets(tetgenio& io, const int* corners, int count);
+
 // Runs TetGen with the given switches on `in`, filling `out`; returns an empty string on success,
 // else why it failed. The driver runs the calls in worker processes (see TetGenWorkers.h). A
 // call stopped for taking too long returns a reason that starts with TetGenTimeLimitReason: no
