@@ -260,6 +260,9 @@ void collectFilterStatistics(
   statistics.tetgenRetries = summary.tetgenRetries;
   statistics.tetgenWithoutQualityBound = summary.tetgenWithoutQualityBound;
   statistics.tetgenRemeshed = summary.tetgenRemeshed;
+  statistics.sweepRemeshedBoxes = summary.sweepRemeshedBoxes;
+  statistics.sweepDroppedPoints = summary.sweepDroppedPoints;
+  statistics.sweepRemeshFailures = summary.sweepRemeshFailures;
   statistics.partitionsPerColor = summary.partitionsPerColor;
   statistics.cellsPerColor = summary.cellsPerColor;
   statistics.colorBalance = summary.colorBalance;
@@ -336,6 +339,9 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
            << std::setw(24) << "tetgen retries" << statistics.tetgenRetries << "\n"
            << std::setw(24) << "tetgen without q" << statistics.tetgenWithoutQualityBound << "\n"
            << std::setw(24) << "tetgen remeshed" << statistics.tetgenRemeshed << "\n"
+           << std::setw(24) << "sweep remeshed boxes" << statistics.sweepRemeshedBoxes << " ("
+           << statistics.sweepDroppedPoints << " points dropped, " << statistics.sweepRemeshFailures
+           << " failed)\n"
            << std::setw(24) << "delaunay fallbacks" << statistics.delaunayFallbacks
            << (statistics.fallbackPartitions.empty()
                   ? std::string()
@@ -402,6 +408,9 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"tetgenRetries\": " << statistics.tetgenRetries << ",\n"
        << "  \"tetgenWithoutQualityBound\": " << statistics.tetgenWithoutQualityBound << ",\n"
        << "  \"tetgenRemeshed\": " << statistics.tetgenRemeshed << ",\n"
+       << "  \"sweepRemeshedBoxes\": " << statistics.sweepRemeshedBoxes << ",\n"
+       << "  \"sweepDroppedPoints\": " << statistics.sweepDroppedPoints << ",\n"
+       << "  \"sweepRemeshFailures\": " << statistics.sweepRemeshFailures << ",\n"
        << "  \"delaunayFallbacks\": " << statistics.delaunayFallbacks << ",\n"
        << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ") << "],\n"
        << "  \"compression\": " << jsonString(statistics.compression) << ",\n";

@@ -57,6 +57,9 @@ struct RefineStatistics
   std::int64_t tetgenRetries = 0;               // partitions TetGen needed a second attempt for
   std::int64_t tetgenWithoutQualityBound = 0;   // of those, refined without the radius-edge bound
   std::int64_t tetgenRemeshed = 0;              // partitions meshed anew from their kept faces
+  std::int64_t sweepRemeshedBoxes = 0;          // Delaunay sweep: boxes meshed anew,
+  std::int64_t sweepDroppedPoints = 0;          // the interior points they dropped,
+  std::int64_t sweepRemeshFailures = 0;         // and boxes TetGen failed on
   bool partitionByRegion = false;
   int partitionsPerRegion = 1;
   std::string coloring;

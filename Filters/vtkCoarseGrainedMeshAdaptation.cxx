@@ -134,6 +134,9 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(
     fieldData, "TetGenWithoutQualityBound", static_cast<double>(result.tetgenWithoutQualityBound));
   addFieldValue(fieldData, "TetGenRemeshed", static_cast<double>(result.tetgenRemeshed));
+  addFieldValue(fieldData, "SweepRemeshedBoxes", static_cast<double>(result.sweepRemeshedBoxes));
+  addFieldValue(fieldData, "SweepDroppedPoints", static_cast<double>(result.sweepDroppedPoints));
+  addFieldValue(fieldData, "SweepRemeshFailures", static_cast<double>(result.sweepRemeshFailures));
   addFieldValue(fieldData, "ColoringAlgorithmIndex", filter->GetColoringAlgorithm());
   // The partitioner used: Automatic resolved to METIS or Hilbert.
   addFieldValue(fieldData, "PartitionerIndex", static_cast<int>(result.plan.partitioner));

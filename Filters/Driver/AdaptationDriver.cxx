@@ -9,6 +9,7 @@
 #include "Partitioning/HilbertPartitioner.h"
 #include "Partitioning/MeshPartitioner.h"
 #include "Refinement/SizeField.h"
+#include "RemeshSweep.h"
 #include "TetGenWorkers.h"
 #include "Validation/InputPreparation.h"
 
@@ -246,8 +247,10 @@ Status adoptMergedMesh(
       summary.cellsPerColor[color] += cellsPerColor[color];
     }
   }
-  // Each collapse leaves exactly one vertex unused: those are coarsening, not the input's fault.
-  const PointId unused = merged.removedPoints - static_cast<PointId>(summary.edgeCollapses);
+  // Each collapse leaves exactly one vertex unused, and so does each point the Delaunay sweep
+  // dropped: those are the run's own, not the input's fault.
+  const PointId unused =
+    merged.removedPoints - static_cast<PointId>(summary.edgeCollapses + summary.sweepDroppedPoints);
   if (unused > 0)
   {
     summary.warnings.push_back({ WarningKind::UnusedPointsRemoved, -1,
@@ -270,6 +273,22 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
   }
   formerInterface =
     findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
+  ColorLoopSetup sweeps = setup;
+  sweeps.stage = Stage::Sweep;
+  sweeps.progressStart = 0;
+  sweeps.progressEnd = 1;
+  if (setup.method == RefinementMethod::Delaunay && options.remeshAcrossFormerInterfaces)
+  {
+    sweeps.progressEnd = 0.5;
+    status = remeshAcrossFormerInterfaces(
+      sweeps, options, summary.plan.boxesPerAxis, formerInterface, state, summary, reporter);
+    if (!status.ok() || summary.aborted)
+    {
+      return status;
+    }
+    sweeps.progressStart = 0.5;
+    sweeps.progressEnd = 1;
+  }
   if (!options.improveQuality && !setup.improvement.coarsen)
   {
     return status;
@@ -278,10 +297,6 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
   {
     return status; // improvement in partitions saw no poor tet: no seam to work on
   }
-  ColorLoopSetup sweeps = setup;
-  sweeps.stage = Stage::Sweep;
-  sweeps.progressStart = 0;
-  sweeps.progressEnd = 1;
   return improveAcrossFormerInterfaces(
     sweeps, options, summary.plan.boxesPerAxis, formerInterface, state, summary, reporter);
 }

@@ -39,7 +39,12 @@ struct AdaptationSummary
   bool refinementConverged = false;
   std::int64_t tetgenRetries = 0; // partition refinements whose first TetGen call failed
   std::int64_t tetgenWithoutQualityBound = 0; // of those, refined by TetGen without q
-  std::int64_t tetgenRemeshed = 0;  // partitions TetGen meshed anew from their kept faces (slivers)
+  std::int64_t tetgenRemeshed = 0; // partitions TetGen meshed anew from their kept faces (slivers)
+  // The Delaunay sweep across former interfaces (remeshAcrossFormerInterfaces): boxes meshed
+  // anew, the interior points they dropped, and boxes where TetGen failed (left as refined).
+  std::int64_t sweepRemeshedBoxes = 0;
+  std::int64_t sweepDroppedPoints = 0;
+  std::int64_t sweepRemeshFailures = 0;
   bool concurrentTetGen = false;    // TetGen calls overlapped (in worker processes)
   std::int64_t reorientedTets = 0;  // inverted input tets that were turned around
   std::int64_t gluedPoints = 0;     // copies of matching faces' corners merged into one point

@@ -16,7 +16,8 @@ enum class WarningKind
   CoincidentPointsMerged,    // copies of the corners of matching faces were glued into one point
   CoincidentPointsKeptApart, // coincident points not on matching faces were left distinct
   UnusedPointsRemoved,       // points no tet uses were left out of the output
-  DelaunayFallback           // TetGen failed on a partition, refined by templates instead
+  DelaunayFallback,          // TetGen failed on a partition, refined by templates instead
+  SweepRemeshFailed          // TetGen failed on a box of the Delaunay sweep, left as refined
 };
 
 // The kind's name in reports ("delaunay-fallback").
@@ -36,6 +37,8 @@ inline const char* warningKindName(WarningKind kind)
       return "unused-points-removed";
     case WarningKind::DelaunayFallback:
       return "delaunay-fallback";
+    case WarningKind::SweepRemeshFailed:
+      return "sweep-remesh-failed";
   }
   return "unknown";
 }

@@ -72,6 +72,9 @@ struct AdaptationOptions
   bool serializeTetGen = false;
   // Partitions whose TetGen call is made to fail, to exercise the fallback.
   std::vector<int> simulateTetGenFailureIn;
+  // Delaunay: the sweep that meshes the slivers at former interfaces anew (RemeshSweep.h); off
+  // only to measure what it does.
+  bool remeshAcrossFormerInterfaces = true;
 
   // Set when the mesh is one piece of a mesh spread over processes (the filter under MPI): face
   // diagonals then follow coordinates, which the processes sharing a face agree on, not ids.

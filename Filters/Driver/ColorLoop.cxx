@@ -65,11 +65,35 @@ TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& stat
     {
       return runner(partition, in, switches, out);
     };
-    report.status = refinePartitionDelaunay(state.partitions[partition], iteration.refinement,
-      received, parameters, runTetGen, refinement, report.delaunay);
+    report.status = iteration.setup.remeshSweep
+      ? remeshPartitionDelaunay(state.partitions[partition], iteration.refinement, parameters,
+          state.inputPointCount, runTetGen, refinement, report.delaunay)
+      : refinePartitionDelaunay(state.partitions[partition], iteration.refinement, received,
+          parameters, runTetGen, refinement, report.delaunay);
   }
   report.seconds = stopwatch.seconds();
   return report;
+}
+
+// The sweep's boxes: how many were meshed anew, the points they dropped, and why the others
+// failed (they stay as refinement left them).
+void recordSweepReports(const std::vector<int>& members, const std::vector<TaskReport>& reports,
+  AdaptationSummary& summary)
+{
+  for (std::size_t i = 0; i < members.size(); ++i)
+  {
+    const DelaunayOutcome& outcome = reports[i].delaunay;
+    summary.tetgenPoints += outcome.tetgenPoints;
+    summary.sweepRemeshedBoxes += outcome.remeshed ? 1 : 0;
+    summary.sweepDroppedPoints += outcome.droppedPoints;
+    if (outcome.fellBack)
+    {
+      ++summary.sweepRemeshFailures;
+      summary.warnings.push_back({ WarningKind::SweepRemeshFailed, -1,
+        "a box across former interfaces could not be meshed anew (" + outcome.reason +
+          "); its tets stay as refined" });
+    }
+  }
 }
 
 void recordReports(const std::vector<int>& members, const std::vector<TaskReport>& reports,
@@ -191,7 +215,14 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
       reports[i] = refineOnePartition(iteration, state, members[i], received[i]);
       received[i] = EdgeMidpointMap();
     });
-  recordReports(members, reports, iterationIndex, summary);
+  if (setup.remeshSweep)
+  {
+    recordSweepReports(members, reports, summary);
+  }
+  else
+  {
+    recordReports(members, reports, iterationIndex, summary);
+  }
   for (const TaskReport& report : reports)
   {
     if (!report.status.ok())
@@ -284,7 +315,7 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
 Status checkForecastSize(
   const ColorLoopSetup& setup, const RefinementContext& context, const AdaptationState& state)
 {
-  if (!setup.refine || setup.maximumNumberOfCells <= 0)
+  if (!setup.refine || setup.remeshSweep || setup.maximumNumberOfCells <= 0)
   {
     return Status::success();
   }
@@ -379,7 +410,8 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
   const auto members = partitionsByColor(*setup.colorOfPartition, setup.numberOfColors);
   const int steps = setup.numberOfIterations * setup.numberOfColors;
   std::size_t pointsAtLastPass = 0;
-  if (setup.refine)
+  const bool refinesPartitions = setup.refine && !setup.remeshSweep; // its figures per partition
+  if (refinesPartitions)
   {
     summary.partitionTaskSeconds.assign(
       static_cast<std::size_t>(setup.numberOfIterations) * summary.plan.partitions, 0.0);
@@ -429,12 +461,12 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
       reporter.progress(
         setup.stage, setup.progressStart + (setup.progressEnd - setup.progressStart) * done);
     }
-    if (setup.refine)
+    if (refinesPartitions)
     {
       summary.iterationsRun = iteration + 1;
     }
   }
-  if (setup.refine && state.coordinates.size() == pointsAtLastPass)
+  if (refinesPartitions && state.coordinates.size() == pointsAtLastPass)
   {
     summary.refinementConverged = true; // the last pass allowed added no point either
   }

@@ -46,8 +46,11 @@ struct ColorLoopSetup
   bool orderCornersByCoordinates = false; // see RefinementContext
   RefinementMethod method = RefinementMethod::Template;
   DelaunayParameters delaunay;
-  PartitionTetGenRunner runTetGen;       // Delaunay: how partitions call TetGen
-  bool refine = true;                    // false: a sweep of quality improvement only
+  PartitionTetGenRunner runTetGen; // Delaunay: how partitions call TetGen
+  bool refine = true;              // false: a sweep of quality improvement only
+  // Delaunay: the sweep across former interfaces, whose boxes are meshed anew without the
+  // interior points refinement made (remeshPartitionDelaunay) instead of refined.
+  bool remeshSweep = false;
   std::int64_t maximumNumberOfCells = 0; // refuse an iteration forecast to exceed it (0: no limit)
   bool improve = false;
   bool sizeField = false; // the points carry the input's size field (AdaptationState::sizes)

@@ -1,10 +1,7 @@
 #include "ImprovementSweep.h"
 
-#include "Coloring/PartitionColoring.h"
+#include "BoxSweep.h"
 #include "ParallelFor.h"
-#include "Partitioning/BoxPartitions.h"
-
-#include <iterator>
 
 namespace cgmesh
 {
@@ -70,44 +67,15 @@ Status improveOverBoxes(const ColorLoopSetup& setup, const AdaptationOptions& op
     candidates = 0;
     return status; // nothing near a former interface needs work
   }
-  const ParallelFor parallelFor = parallelForOn(setup.threads);
   const BoxLayout layout = layBoxes(state.coordinates, cells, 0.5 * sweepIndex);
-  std::vector<PartitionMesh> boxes;
-  status = regroupIntoBoxes(
-    state.partitions, state.coordinates, layout, parallelFor, boxes, &cornersOfWork);
-  if (!status.ok())
-  {
-    return status;
-  }
-  std::vector<PartitionMesh> staying = std::move(state.partitions);
-  state.partitions = std::move(boxes);
-  candidates = state.partitions.size();
-  PartitionGraph graph;
-  status = buildBoxGraph(state.partitions, state.coordinates, layout, parallelFor, graph);
-  std::vector<int> colorOfBox;
-  if (status.ok())
-  {
-    status = colorPartitions(graph, options.coloring, setup.threads, colorOfBox);
-  }
-  if (!status.ok())
-  {
-    return status;
-  }
   ColorLoopSetup sweep = setup;
-  sweep.graph = &graph;
-  sweep.colorOfPartition = &colorOfBox;
-  sweep.numberOfColors = countColors(colorOfBox);
-  sweep.numberOfIterations = 1;
   sweep.refine = false;
   sweep.improve = true;
   const double half = 0.5 * (setup.progressEnd - setup.progressStart);
   sweep.progressStart = setup.progressStart + half * sweepIndex;
   sweep.progressEnd = sweep.progressStart + half;
-  status = runColorLoop(sweep, options, state, summary, reporter);
-  std::copy_if(std::make_move_iterator(staying.begin()), std::make_move_iterator(staying.end()),
-    std::back_inserter(state.partitions),
-    [](const PartitionMesh& partition) { return !partition.tets.empty(); });
-  return status;
+  return runSweepOverBoxes(
+    sweep, options, layout, cornersOfWork, state, summary, reporter, candidates);
 }
 
 } // namespace

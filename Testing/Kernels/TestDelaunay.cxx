@@ -604,6 +604,155 @@ void test_sliver_laden_mesh_conforms_across_threads()
             << serial.summary.delaunayFallbacks << " fallbacks\n";
   options.numberOfThreads = 2;
   CHECK(cgmesh_test::identicalResults(serial, run(input, options)));
+
+  // The sweep across former interfaces meshed its boxes anew without the points refinement had
+  // crowded there: the slivers those made are gone, and no point is left over but those.
+  CHECK(serial.summary.sweepRemeshedBoxes > 0 && serial.summary.sweepDroppedPoints > 0);
+  CHECK_EQUAL(serial.summary.sweepRemeshFailures, std::int64_t(0));
+  CHECK(std::none_of(serial.summary.warnings.begin(), serial.summary.warnings.end(),
+    [](const AdaptationWarning& warning)
+    { return warning.kind == WarningKind::UnusedPointsRemoved; }));
+  options.numberOfThreads = 1;
+  options.remeshAcrossFormerInterfaces = false;
+  const AdaptationResult unswept = run(input, options);
+  CHECK_EQUAL(unswept.summary.sweepRemeshedBoxes, std::int64_t(0));
+  const double sliversAfterSweep = shareBelow(serial.mesh.tets, serial.mesh.coordinates, 1.0);
+  const double sliversWithout = shareBelow(unswept.mesh.tets, unswept.mesh.coordinates, 1.0);
+  std::cout << "share of output tets under 1 degree: " << sliversAfterSweep << " with the sweep ("
+            << serial.summary.sweepRemeshedBoxes << " boxes, " << serial.summary.sweepDroppedPoints
+            << " points dropped), " << sliversWithout << " without\n";
+  CHECK(sliversAfterSweep < 0.25 * sliversWithout);
+}
+
+// The sweep's kernel: a partition meshed anew from its kept faces drops exactly its interior
+// points from `firstDroppablePoint` on, keeps every other point, its region volumes and the cavity
+// of other partitions it encloses.
+void test_sweep_box_drops_only_interior_points_refinement_made()
+{
+  const TetMesh mesh = sliverLadenBlock(1500);
+  PartitionMesh partition;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    if (mesh.regions[t] != 2) // region 2 is the cavity
+    {
+      partition.tets.push_back(mesh.tets[t]);
+      partition.regions.push_back(mesh.regions[t]);
+      partition.parentCells.push_back(t);
+    }
+  }
+  // The points of kept faces, found here on their own: faces of one tet of the partition, or of
+  // two tets of different regions.
+  std::map<std::array<PointId, 3>, std::vector<std::size_t>> tetsOfFace;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      std::array<PointId, 3> face;
+      for (int k = 0, n = 0; k < 4; ++k)
+      {
+        if (k != skip)
+        {
+          face[n++] = partition.tets[t][k];
+        }
+      }
+      std::sort(face.begin(), face.end());
+      tetsOfFace[face].push_back(t);
+    }
+  }
+  std::vector<char> onKeptFace(mesh.numberOfPoints(), 0), inPartition(mesh.numberOfPoints(), 0);
+  for (const auto& entry : tetsOfFace)
+  {
+    const std::vector<std::size_t>& owners = entry.second;
+    if (owners.size() == 1 || partition.regions[owners[0]] != partition.regions[owners[1]])
+    {
+      for (PointId p : entry.first)
+      {
+        onKeptFace[p] = 1;
+      }
+    }
+  }
+  for (const Tet& tet : partition.tets)
+  {
+    for (PointId p : tet)
+    {
+      inPartition[p] = 1;
+    }
+  }
+  const PointId firstDroppable = mesh.numberOfPoints() / 2; // as if refinement made the rest
+  std::int64_t droppable = 0;
+  for (PointId p = firstDroppable; p < mesh.numberOfPoints(); ++p)
+  {
+    droppable += inPartition[p] && !onKeptFace[p];
+  }
+  CHECK(droppable > 100);
+
+  const DelaunayParameters parameters{ 0.5 / mesh.numberOfTets(), 2.0, false };
+  const PartitionSetting setting(mesh, parameters);
+  TetGenWorkerPool pool(1);
+  const TetGenRunner runner = [&](const tetgenio& in, const std::string& switches, tetgenio& out)
+  {
+    CHECK(switches.rfind("pA", 0) == 0);
+    return pool.run(0, in, switches, out);
+  };
+  PartitionRefinement refinement;
+  DelaunayOutcome outcome;
+  PartitionMesh remeshed = partition;
+  CHECK(remeshPartitionDelaunay(
+    remeshed, setting.context, parameters, firstDroppable, runner, refinement, outcome)
+          .ok());
+  CHECK(outcome.remeshed && !outcome.fellBack);
+  CHECK_EQUAL(outcome.droppedPoints, droppable);
+  CHECK(refinement.newPointSources.empty() || outcome.tetgenPoints > 0);
+
+  std::vector<char> usedAfter(mesh.numberOfPoints(), 0);
+  std::map<int, double> before, after;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    before[partition.regions[t]] += signedVolume6(mesh, partition.tets[t]) / 6.0;
+  }
+  std::vector<double> coordinates = mesh.coordinates;
+  coordinates.insert(
+    coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
+  for (std::size_t t = 0; t < remeshed.tets.size(); ++t)
+  {
+    Tet tet;
+    for (int k = 0; k < 4; ++k)
+    {
+      const PointId p = remeshed.tets[t][k];
+      tet[k] = p >= 0 ? p : mesh.numberOfPoints() - p - 1;
+      if (p >= 0)
+      {
+        usedAfter[p] = 1;
+      }
+    }
+    const double volume =
+      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]);
+    CHECK(volume > 0);
+    after[remeshed.regions[t]] += volume / 6.0;
+  }
+  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  {
+    const bool dropped = p >= firstDroppable && inPartition[p] && !onKeptFace[p];
+    CHECK_EQUAL(static_cast<int>(usedAfter[p]), static_cast<int>(inPartition[p] && !dropped));
+  }
+  CHECK_EQUAL(after.size(), before.size());
+  for (const auto& region : before)
+  {
+    CHECK_CLOSE(after[region.first], region.second, 1e-12);
+  }
+
+  // A failed call leaves the partition as it was.
+  PartitionMesh kept = partition;
+  PartitionRefinement untouched;
+  DelaunayOutcome failed;
+  CHECK(remeshPartitionDelaunay(
+    kept, setting.context, parameters, firstDroppable,
+    [](const tetgenio&, const std::string&, tetgenio&) { return std::string("refused"); },
+    untouched, failed)
+          .ok());
+  CHECK(failed.fellBack && failed.reason == "refused" && !failed.remeshed);
+  CHECK(kept.tets == partition.tets && untouched.newCoordinates.empty());
 }
 
 } // namespace
@@ -619,5 +768,6 @@ int main()
   test_tampered_tetgen_output_is_refused();
   test_sliver_laden_partition_is_meshed_anew_around_a_cavity();
   test_sliver_laden_mesh_conforms_across_threads();
+  test_sweep_box_drops_only_interior_points_refinement_made();
   return cgmesh_test::finish("TestDelaunay");
 }

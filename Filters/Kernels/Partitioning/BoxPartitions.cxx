@@ -92,8 +92,28 @@ bool moves(const Tet& tet, const std::vector<char>* movingIfFlagged)
   return !movingIfFlagged || touchesFlaggedPoint(tet, *movingIfFlagged);
 }
 
+// The box a moving tet goes to: its centroid's, or with `boxOfFlaggedPoint` the entry of its
+// first flagged corner.
+std::size_t boxOfMovingTet(const Tet& tet, const std::vector<double>& coordinates,
+  const BoxLayout& layout, const std::vector<char>* movingIfFlagged,
+  const std::vector<std::size_t>* boxOfFlaggedPoint)
+{
+  if (boxOfFlaggedPoint)
+  {
+    for (PointId p : tet)
+    {
+      if ((*movingIfFlagged)[p])
+      {
+        return (*boxOfFlaggedPoint)[p];
+      }
+    }
+  }
+  return layout.boxOf(tet, coordinates);
+}
+
 MovingTets sortMovingTets(const PartitionMesh& partition, const std::vector<double>& coordinates,
-  const BoxLayout& layout, const std::vector<char>* movingIfFlagged)
+  const BoxLayout& layout, const std::vector<char>* movingIfFlagged,
+  const std::vector<std::size_t>* boxOfFlaggedPoint)
 {
   MovingTets moving;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
@@ -101,7 +121,9 @@ MovingTets sortMovingTets(const PartitionMesh& partition, const std::vector<doub
     const Tet& tet = partition.tets[t];
     if (moves(tet, movingIfFlagged))
     {
-      moving.keys.push_back((static_cast<std::uint64_t>(layout.boxOf(tet, coordinates)) << 32) | t);
+      const std::size_t box =
+        boxOfMovingTet(tet, coordinates, layout, movingIfFlagged, boxOfFlaggedPoint);
+      moving.keys.push_back((static_cast<std::uint64_t>(box) << 32) | t);
     }
   }
   std::sort(moving.keys.begin(), moving.keys.end());
@@ -174,7 +196,8 @@ void keepStaying(PartitionMesh& partition, const MovingTets& moving)
 
 Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
-  std::vector<PartitionMesh>& boxes, const std::vector<char>* movingIfFlagged)
+  std::vector<PartitionMesh>& boxes, const std::vector<char>* movingIfFlagged,
+  const std::vector<std::size_t>* boxOfFlaggedPoint)
 {
   if (std::any_of(partitions.begin(), partitions.end(),
         [](const PartitionMesh& partition) { return partition.tets.size() >> 32 != 0; }))
@@ -188,7 +211,10 @@ Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   std::vector<MovingTets> moving(partitions.size());
   Status status = parallelFor(partitionCount,
     [&](std::int64_t p)
-    { moving[p] = sortMovingTets(partitions[p], coordinates, layout, movingIfFlagged); });
+    {
+      moving[p] =
+        sortMovingTets(partitions[p], coordinates, layout, movingIfFlagged, boxOfFlaggedPoint);
+    });
   if (!status.ok())
   {
     return status;

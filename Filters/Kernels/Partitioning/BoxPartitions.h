@@ -41,12 +41,16 @@ struct BoxLayout
 // inside boxes).
 BoxLayout layBoxes(const std::vector<double>& coordinates, int cells, double shift);
 
-// Moves the tets of `partitions` into the boxes of `layout` (`boxes`). With `movingIfFlagged`,
-// only the tets that touch a flagged point move, and the others stay in their partition, in order
-// (nothing is allocated for them); without it every tet moves and the partitions are emptied.
+// Moves the tets of `partitions` into the boxes of `layout` (`boxes`), each into the box of its
+// centroid. With `movingIfFlagged`, only the tets that touch a flagged point move, and the others
+// stay in their partition, in order (nothing is allocated for them); without it every tet moves
+// and the partitions are emptied. With `boxOfFlaggedPoint` as well (an entry per flagged point),
+// a moving tet goes into the box its first flagged corner names instead: tets that must stay
+// together go into one box.
 Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
-  std::vector<PartitionMesh>& boxes, const std::vector<char>* movingIfFlagged = nullptr);
+  std::vector<PartitionMesh>& boxes, const std::vector<char>* movingIfFlagged = nullptr,
+  const std::vector<std::size_t>* boxOfFlaggedPoint = nullptr);
 
 // The boxes' partition graph, for colouring: two boxes are neighbours when the bounding boxes of
 // their tets' corners meet. Boxes that share a point always do, so the graph holds every edge of

@@ -3,6 +3,7 @@
 #include "Refinement/ConstrainedEdgeSplits.h"
 #include "Refinement/EnclosedPieces.h"
 
+#include "Core/ConstrainedFaces.h"
 #include "Core/FaceKey.h"
 #include "Core/Geometry.h"
 #include "Core/TetLocator.h"
@@ -47,12 +48,23 @@ struct TetOrder
   }
 };
 
-// The partition renumbered 0..n-1 for TetGen, and the way back.
+// What TetGen receives of a partition.
+enum class TetGenInput
+{
+  Tets,                  // its tets, to refine (switch r)
+  KeptFacesAndPoints,    // its kept faces and all its points, to mesh anew (switch p)
+  KeptFacesAndOwnPoints, // the same without the interior points refinement made (see
+                         // remeshPartitionDelaunay)
+};
+
+// The partition renumbered 0..n-1 for TetGen, and the way back. Only the first `passed` points
+// go to TetGen: the others are interior points it meshes without (and that the partition loses).
 struct LocalNumbering
 {
   std::vector<PointId> idOfLocal;
   std::unordered_map<PointId, int> localOfId;
   std::vector<std::size_t> tetOfLocal; // a partition tet with that point: where walks start
+  std::size_t passed = 0;
 };
 
 class TetGenSession
@@ -76,16 +88,21 @@ public:
     return pointSize(*this->Context.sizes, this->Refinement.newSizes, id);
   }
 
-  // Fills TetGen's input from the partition and the faces it must keep: the partition's tets to
-  // refine (switch r), or with `remesh` only its points and kept faces, as a PLC that TetGen meshes
-  // anew (switch p). `order` says in which order TetGen receives the tets, or the faces when
-  // remeshing (the attempts of refineWithTetGen).
-  void prepareInput(tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order, bool remesh)
+  // Fills TetGen's input from the partition and the faces it must keep (see TetGenInput).
+  // `order` says in which order TetGen receives the tets, or the faces when remeshing (the
+  // attempts of refineWithTetGen). With KeptFacesAndOwnPoints, the points from
+  // `firstDroppablePoint` on that lie on no kept face are left out.
+  void prepareInput(tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order,
+    TetGenInput input, PointId firstDroppablePoint = 0)
   {
     this->numberPoints();
-    this->Remesh = remesh;
+    this->Remesh = input != TetGenInput::Tets;
+    if (input == TetGenInput::KeptFacesAndOwnPoints)
+    {
+      this->passOnlyKeptPoints(keptFaces, firstDroppablePoint);
+    }
     in.firstnumber = 0;
-    in.numberofpoints = static_cast<int>(this->Numbering.idOfLocal.size());
+    in.numberofpoints = static_cast<int>(this->Numbering.passed);
     in.pointlist = new REAL[3 * in.numberofpoints];
     for (int i = 0; i < in.numberofpoints; ++i)
     {
@@ -114,7 +131,7 @@ public:
       this->KeptFaces.push_back(local);
     }
     std::sort(this->KeptFaces.begin(), this->KeptFaces.end());
-    if (remesh)
+    if (this->Remesh)
     {
       this->fillFacetsAndRegions(in, keptFaces, order);
     }
@@ -132,6 +149,12 @@ public:
   // Checks what TetGen returned: input points kept in place, positive tets, the same boundary
   // and region interfaces, the same volume per region. Empty when valid.
   std::string validate(const tetgenio& in, const tetgenio& out) const;
+
+  // The partition's points TetGen meshed without.
+  std::int64_t droppedPoints() const
+  {
+    return static_cast<std::int64_t>(this->Numbering.idOfLocal.size() - this->Numbering.passed);
+  }
 
   // Replaces the partition by TetGen's output; new points are placed in the old tets.
   void adoptOutput(const tetgenio& out, PartitionMesh& partition, PartitionRefinement& refinement,
@@ -154,6 +177,42 @@ private:
         }
       }
     }
+    this->Numbering.passed = this->Numbering.idOfLocal.size();
+  }
+
+  // Renumbers the points so that those TetGen receives come first, in their order, and the
+  // dropped ones after them: the points from `firstDroppablePoint` on that lie on no kept face.
+  // Such a point is used by this partition's tets alone (any other tet at it would leave a kept
+  // face of this partition at it), so no other partition loses it.
+  void passOnlyKeptPoints(const std::vector<Face>& keptFaces, PointId firstDroppablePoint)
+  {
+    LocalNumbering& numbering = this->Numbering;
+    std::vector<char> keep(numbering.idOfLocal.size(), 0);
+    for (std::size_t i = 0; i < keep.size(); ++i)
+    {
+      const PointId id = numbering.idOfLocal[i];
+      keep[i] = id >= 0 && id < firstDroppablePoint; // provisional (negative) ids are new points
+    }
+    for (const Face& face : keptFaces)
+    {
+      for (PointId p : face)
+      {
+        keep[static_cast<std::size_t>(numbering.localOfId.at(p))] = 1;
+      }
+    }
+    std::vector<std::size_t> order(keep.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return keep[i] != 0; });
+    LocalNumbering renumbered;
+    for (std::size_t old : order)
+    {
+      renumbered.localOfId.emplace(
+        numbering.idOfLocal[old], static_cast<int>(renumbered.idOfLocal.size()));
+      renumbered.idOfLocal.push_back(numbering.idOfLocal[old]);
+      renumbered.tetOfLocal.push_back(numbering.tetOfLocal[old]);
+      renumbered.passed += keep[old] ? 1 : 0;
+    }
+    numbering = std::move(renumbered);
   }
 
   std::vector<int> localCorners() const
@@ -229,8 +288,15 @@ private:
     const std::vector<int> pieceOfTet = enclosedPieces(corners, this->KeptFaces);
     const int pieceCount =
       pieceOfTet.empty() ? 0 : *std::max_element(pieceOfTet.begin(), pieceOfTet.end()) + 1;
+    std::vector<double> localCoordinates; // of every local point, dropped ones too
+    localCoordinates.reserve(3 * this->Numbering.idOfLocal.size());
+    for (PointId id : this->Numbering.idOfLocal)
+    {
+      const double* xyz = this->coordinatesOf(id);
+      localCoordinates.insert(localCoordinates.end(), xyz, xyz + 3);
+    }
     const std::vector<std::array<double, 3>> inside =
-      pointInsideEachPiece(corners, pieceOfTet, pieceCount, in.pointlist);
+      pointInsideEachPiece(corners, pieceOfTet, pieceCount, localCoordinates.data());
     this->RegionOfAttribute.assign(this->Partition.regions.begin(), this->Partition.regions.end());
     if (this->RegionOfAttribute.empty())
     {
@@ -451,7 +517,7 @@ std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) con
 void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
   PartitionRefinement& refinement, DelaunayOutcome& outcome) const
 {
-  const int inputPointCount = static_cast<int>(this->Numbering.idOfLocal.size());
+  const int inputPointCount = static_cast<int>(this->Numbering.passed);
   TetLocator locator(this->Partition.tets, [this](PointId id) { return this->coordinatesOf(id); });
   locator.buildFaceNeighbours(this->Partition.tets);
 
@@ -474,8 +540,10 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
 
   // New points first: their ids are needed for the tets. Placing reads the old tets, whose
   // coordinates live in refinement.newCoordinates, so collect the additions before appending.
-  std::vector<PointId> idOfOutput(this->Numbering.idOfLocal);
-  std::vector<std::size_t> tetOfOutput(this->Numbering.tetOfLocal);
+  std::vector<PointId> idOfOutput(
+    this->Numbering.idOfLocal.begin(), this->Numbering.idOfLocal.begin() + inputPointCount);
+  std::vector<std::size_t> tetOfOutput(
+    this->Numbering.tetOfLocal.begin(), this->Numbering.tetOfLocal.begin() + inputPointCount);
   std::vector<double> coordinates;
   std::vector<PointSource> sources;
   std::vector<double> sizes;
@@ -607,8 +675,46 @@ struct TetGenAttempt
 {
   TetOrder order;
   bool qualityBound;
-  bool remesh; // switch p instead of r
+  TetGenInput input;
 };
+
+// Runs the attempts in turn until one gives a valid mesh, which the partition adopts; returns
+// the last failure, empty on success. A call stopped at the time limit while refining (switch r)
+// ends the attempts.
+std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMesh& partition,
+  const std::vector<Face>& keptFaces, const RefinementContext& context,
+  const DelaunayParameters& parameters, PointId firstDroppablePoint, const TetGenRunner& runTetGen,
+  PartitionRefinement& refinement, DelaunayOutcome& outcome)
+{
+  std::string failure;
+  for (const TetGenAttempt& attempt : attempts)
+  {
+    TetGenSession session(partition, context, refinement);
+    tetgenio in, out;
+    session.prepareInput(in, keptFaces, attempt.order, attempt.input, firstDroppablePoint);
+    const bool remesh = attempt.input != TetGenInput::Tets;
+    failure = runTetGen(
+      in, tetgenSwitches(parameters, attempt.qualityBound, context.sizes != nullptr, remesh), out);
+    if (failure.empty())
+    {
+      failure = session.validate(in, out);
+    }
+    if (failure.empty())
+    {
+      session.adoptOutput(out, partition, refinement, outcome);
+      outcome.withoutQualityBound = !attempt.qualityBound;
+      outcome.remeshed = remesh;
+      outcome.droppedPoints = session.droppedPoints();
+      return failure;
+    }
+    outcome.retried = true;
+    if (!remesh && failure.rfind(TetGenTimeLimitReason, 0) == 0)
+    {
+      break;
+    }
+  }
+  return failure;
+}
 
 // Runs TetGen on the partition; an empty string means the partition now holds TetGen's mesh.
 std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& keptFaces,
@@ -632,40 +738,16 @@ std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& 
   std::vector<TetGenAttempt> attempts;
   if (holdsManySlivers(partition, context, refinement))
   {
-    attempts.push_back({ TetOrder::forward(keptFaces.size()), true, true });
+    attempts.push_back(
+      { TetOrder::forward(keptFaces.size()), true, TetGenInput::KeptFacesAndPoints });
   }
   const std::size_t count = partition.tets.size();
-  attempts.push_back({ TetOrder::forward(count), true, false });
-  attempts.push_back({ TetOrder::reversed(count), true, false });
-  attempts.push_back({ TetOrder::strided(count), true, false });
-  attempts.push_back({ TetOrder::forward(count), false, false });
-  std::string failure;
-  for (const TetGenAttempt& attempt : attempts)
-  {
-    TetGenSession session(partition, context, refinement);
-    tetgenio in, out;
-    session.prepareInput(in, keptFaces, attempt.order, attempt.remesh);
-    failure = runTetGen(in,
-      tetgenSwitches(parameters, attempt.qualityBound, context.sizes != nullptr, attempt.remesh),
-      out);
-    if (failure.empty())
-    {
-      failure = session.validate(in, out);
-    }
-    if (failure.empty())
-    {
-      session.adoptOutput(out, partition, refinement, outcome);
-      outcome.withoutQualityBound = !attempt.qualityBound;
-      outcome.remeshed = attempt.remesh;
-      return failure;
-    }
-    outcome.retried = true;
-    if (!attempt.remesh && failure.rfind(TetGenTimeLimitReason, 0) == 0)
-    {
-      break;
-    }
-  }
-  return failure;
+  attempts.push_back({ TetOrder::forward(count), true, TetGenInput::Tets });
+  attempts.push_back({ TetOrder::reversed(count), true, TetGenInput::Tets });
+  attempts.push_back({ TetOrder::strided(count), true, TetGenInput::Tets });
+  attempts.push_back({ TetOrder::forward(count), false, TetGenInput::Tets });
+  return runAttempts(
+    attempts, partition, keptFaces, context, parameters, 0, runTetGen, refinement, outcome);
 }
 
 // TetGen's output tets per regular tet of edge h that fills the same volume: 1.68 M tets on the
@@ -720,6 +802,30 @@ double forecastDelaunayTetsForSizes(const std::vector<Tet>& tets,
 double interfaceEdgeLengthForVolume(double maximumVolume)
 {
   return std::cbrt(6.0 * std::sqrt(2.0) * maximumVolume);
+}
+
+Status remeshPartitionDelaunay(PartitionMesh& partition, const RefinementContext& context,
+  const DelaunayParameters& parameters, PointId firstDroppablePoint, const TetGenRunner& runTetGen,
+  PartitionRefinement& refinement, DelaunayOutcome& outcome)
+{
+  if (partition.tets.empty())
+  {
+    return Status::success();
+  }
+  std::vector<Face> keptFaces, regionInterfaceFaces;
+  findConstrainedFaces(partition, keptFaces, regionInterfaceFaces);
+  keptFaces.insert(keptFaces.end(), regionInterfaceFaces.begin(), regionInterfaceFaces.end());
+  // A second order of the faces where TetGen fails on the first (see refineWithTetGen).
+  const std::vector<TetGenAttempt> attempts{
+    { TetOrder::forward(keptFaces.size()), true, TetGenInput::KeptFacesAndOwnPoints },
+    { TetOrder::strided(keptFaces.size()), true, TetGenInput::KeptFacesAndOwnPoints },
+  };
+  outcome.reason = parameters.simulateFailure
+    ? std::string("simulated TetGen failure")
+    : runAttempts(attempts, partition, keptFaces, context, parameters, firstDroppablePoint,
+        runTetGen, refinement, outcome);
+  outcome.fellBack = !outcome.reason.empty();
+  return Status::success();
 }
 
 Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext& context,

@@ -66,6 +66,7 @@ struct DelaunayOutcome
   bool retried = false;             // the first TetGen call failed, a second attempt was made
   bool withoutQualityBound = false; // refined by the last attempt, without the radius-edge bound
   bool remeshed = false;            // meshed anew from its kept faces and points (switch p)
+  std::int64_t droppedPoints = 0;   // interior points meshed without (remeshPartitionDelaunay)
   std::string reason;               // why, when it fell back
   std::int64_t tetgenPoints = 0;    // Steiner points TetGen inserted
 };
@@ -74,6 +75,16 @@ struct DelaunayOutcome
 Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext& context,
   const EdgeMidpointMap& received, const DelaunayParameters& parameters,
   const TetGenRunner& runTetGen, PartitionRefinement& refinement, DelaunayOutcome& outcome);
+
+// The Delaunay sweep across former interfaces: meshes the partition anew (switch p) from its
+// boundary and material-interface faces as they are (no edge is split, so no neighbour has
+// anything to heal) and from its points, but for the interior ones from `firstDroppablePoint` on
+// (those an earlier pass made), which the partition loses. Where partitions of the first pass
+// met, those points crowd the former interface and TetGen, bound to keep them, leaves the slivers
+// they make. On failure the partition stays as it was, and `outcome` says why (fellBack, reason).
+Status remeshPartitionDelaunay(PartitionMesh& partition, const RefinementContext& context,
+  const DelaunayParameters& parameters, PointId firstDroppablePoint, const TetGenRunner& runTetGen,
+  PartitionRefinement& refinement, DelaunayOutcome& outcome);
 
 } // namespace cgmesh
 

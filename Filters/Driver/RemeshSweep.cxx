@@ -1,0 +1,160 @@
+#include "RemeshSweep.h"
+
+#include "BoxSweep.h"
+#include "Core/TetQuality.h"
+#include "ParallelFor.h"
+
+#include <algorithm>
+#include <atomic>
+#include <numeric>
+
+namespace cgmesh
+{
+namespace
+{
+
+// For each partition, in parallel, the corners of its tets that pass `selects`; then their union
+// in `flagged`.
+template <typename Selects>
+Status flagCornersOf(
+  int threads, const AdaptationState& state, const Selects& selects, std::vector<char>& flagged)
+{
+  std::vector<std::vector<PointId>> corners(state.partitions.size());
+  const Status status = runParallel(threads, static_cast<std::int64_t>(state.partitions.size()),
+    [&](std::int64_t p)
+    {
+      for (const Tet& tet : state.partitions[p].tets)
+      {
+        if (selects(tet))
+        {
+          corners[p].insert(corners[p].end(), tet.begin(), tet.end());
+        }
+      }
+    });
+  for (const std::vector<PointId>& list : corners)
+  {
+    for (PointId p : list)
+    {
+      flagged[p] = 1;
+    }
+  }
+  return status;
+}
+
+// Flags the corners of the tets at former interface vertices under SweepSliverDegrees, then grows
+// the flags SweepRings times by the corners of every tet touching one. Flags nothing when no tet
+// there is under RemeshSliverDegrees: improvement mends the others at a fraction of the cost.
+Status flagAroundSlivers(int threads, const std::vector<char>& formerInterface,
+  const AdaptationState& state, std::vector<char>& flagged, bool& found)
+{
+  const std::vector<double>& xyz = state.coordinates;
+  flagged.assign(xyz.size() / 3, 0);
+  std::atomic<bool> severe(false);
+  Status status = flagCornersOf(
+    threads, state,
+    [&](const Tet& tet)
+    {
+      if (!touchesFlaggedPoint(tet, formerInterface))
+      {
+        return false;
+      }
+      const double angle = minimumDihedralAngle(xyz.data() + 3 * tet[0], xyz.data() + 3 * tet[1],
+        xyz.data() + 3 * tet[2], xyz.data() + 3 * tet[3]);
+      if (angle < RemeshSliverDegrees)
+      {
+        severe = true;
+      }
+      return angle < SweepSliverDegrees;
+    },
+    flagged);
+  found = severe;
+  if (!found)
+  {
+    flagged.clear();
+  }
+  for (int ring = 0; ring < SweepRings && status.ok() && found; ++ring)
+  {
+    const std::vector<char> before = flagged;
+    status = flagCornersOf(
+      threads, state, [&](const Tet& tet) { return touchesFlaggedPoint(tet, before); }, flagged);
+  }
+  return status;
+}
+
+// Joins the flagged points that are corners of one tet into clusters (union-find, each set's
+// root its lowest point id, so the result does not depend on the order of the unions) and names
+// for each flagged point the box of its cluster's root: a cluster's tets go into one box, never
+// cut by a box face.
+std::vector<std::size_t> boxOfClusters(
+  const AdaptationState& state, const std::vector<char>& flagged, const BoxLayout& layout)
+{
+  std::vector<PointId> parent(flagged.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&parent](PointId p)
+  {
+    while (parent[p] != p)
+    {
+      parent[p] = parent[parent[p]];
+      p = parent[p];
+    }
+    return p;
+  };
+  for (const PartitionMesh& partition : state.partitions)
+  {
+    for (const Tet& tet : partition.tets)
+    {
+      PointId first = -1;
+      for (PointId p : tet)
+      {
+        if (!flagged[p])
+        {
+          continue;
+        }
+        if (first < 0)
+        {
+          first = root(p);
+          continue;
+        }
+        const PointId other = root(p);
+        parent[std::max(first, other)] = std::min(first, other);
+        first = std::min(first, other);
+      }
+    }
+  }
+  std::vector<std::size_t> box(flagged.size(), 0);
+  for (std::size_t p = 0; p < flagged.size(); ++p)
+  {
+    if (flagged[p])
+    {
+      box[p] = layout.boxAt(layout.indexOf(state.coordinates.data() + 3 * root(p)));
+    }
+  }
+  return box;
+}
+
+} // namespace
+
+Status remeshAcrossFormerInterfaces(const ColorLoopSetup& setup, const AdaptationOptions& options,
+  int boxesPerAxis, const std::vector<char>& formerInterface, AdaptationState& state,
+  AdaptationSummary& summary, PhaseReporter& reporter)
+{
+  reporter.enter(Phase::Adapt);
+  std::vector<char> moving;
+  bool found = false;
+  Status status = flagAroundSlivers(setup.threads, formerInterface, state, moving, found);
+  if (!status.ok() || !found)
+  {
+    return status;
+  }
+  const BoxLayout layout = layBoxes(state.coordinates, boxesPerAxis, 0);
+  const std::vector<std::size_t> boxOfPoint = boxOfClusters(state, moving, layout);
+  ColorLoopSetup sweep = setup;
+  sweep.refine = true;
+  sweep.remeshSweep = true;
+  sweep.improve = false;
+  std::size_t boxes = 0;
+  return runSweepOverBoxes(
+    sweep, options, layout, moving, state, summary, reporter, boxes, &boxOfPoint);
+}
+
+} // namespace cgmesh

@@ -1,0 +1,32 @@
+// The Delaunay sweep across former interfaces. Refinement keeps every partition's boundary as it
+// is, so where the partitions of a sliver-laden input meet, TetGen fills both sides against the
+// same poor faces and crowds points along them; improvement (swaps and smoothing) cannot undo
+// that. This sweep gathers the slivers at former interfaces, with the tets around them, into
+// clusters of tets that share a corner, puts each cluster whole into one box (a box face through
+// a cluster would be a poor face to keep, on which TetGen fails), and lets TetGen mesh each box
+// anew without the interior points refinement made (remeshPartitionDelaunay), boxes of one
+// colour at once.
+#ifndef cgmesh_RemeshSweep_h
+#define cgmesh_RemeshSweep_h
+
+#include "ColorLoop.h"
+
+namespace cgmesh
+{
+
+// A tet at a former interface vertex with a minimum dihedral angle below this goes into the
+// sweep's boxes, with the tets up to SweepRings vertex rings around it.
+constexpr double SweepSliverDegrees = 5.0;
+constexpr int SweepRings = 2;
+
+// `setup` is the Delaunay refinement's (threads, TetGen runner, bounds); `boxesPerAxis` the boxes
+// along each axis of the grid; `formerInterface` flags the vertices shared by two
+// refinement partitions. Does nothing when no tet at a former interface is under
+// RemeshSliverDegrees. Its time is heal, adapt and post, as refinement's is.
+Status remeshAcrossFormerInterfaces(const ColorLoopSetup& setup, const AdaptationOptions& options,
+  int boxesPerAxis, const std::vector<char>& formerInterface, AdaptationState& state,
+  AdaptationSummary& summary, PhaseReporter& reporter);
+
+} // namespace cgmesh
+
+#endif
