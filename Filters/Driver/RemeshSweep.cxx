@@ -42,14 +42,15 @@ Status flagCornersOf(
 }
 
 // Flags the corners of the tets at former interface vertices under SweepSliverDegrees, then grows
-// the flags SweepRings times by the corners of every tet touching one. Flags nothing when no tet
-// there is under RemeshSliverDegrees: improvement mends the others at a fraction of the cost.
+// the flags SweepRings times by the corners of every tet touching one. Flags nothing unless the
+// tets there under RemeshSliverDegrees are more than RemeshSliverShare of all tets, the rule a
+// partition is meshed anew by: improvement mends a few slivers at a fraction of the cost.
 Status flagAroundSlivers(int threads, const std::vector<char>& formerInterface,
   const AdaptationState& state, std::vector<char>& flagged, bool& found)
 {
   const std::vector<double>& xyz = state.coordinates;
   flagged.assign(xyz.size() / 3, 0);
-  std::atomic<bool> severe(false);
+  std::atomic<std::int64_t> severe(0);
   Status status = flagCornersOf(
     threads, state,
     [&](const Tet& tet)
@@ -62,12 +63,17 @@ Status flagAroundSlivers(int threads, const std::vector<char>& formerInterface,
         xyz.data() + 3 * tet[2], xyz.data() + 3 * tet[3]);
       if (angle < RemeshSliverDegrees)
       {
-        severe = true;
+        ++severe;
       }
       return angle < SweepSliverDegrees;
     },
     flagged);
-  found = severe;
+  std::size_t tets = 0;
+  for (const PartitionMesh& partition : state.partitions)
+  {
+    tets += partition.tets.size();
+  }
+  found = static_cast<double>(severe.load()) > RemeshSliverShare * static_cast<double>(tets);
   if (!found)
   {
     flagged.clear();

@@ -21,8 +21,9 @@ constexpr int SweepRings = 2;
 
 // `setup` is the Delaunay refinement's (threads, TetGen runner, bounds); `boxesPerAxis` the boxes
 // along each axis of the grid; `formerInterface` flags the vertices shared by two
-// refinement partitions. Does nothing when no tet at a former interface is under
-// RemeshSliverDegrees. Its time is heal, adapt and post, as refinement's is.
+// refinement partitions. Does nothing unless the tets at former interfaces under
+// RemeshSliverDegrees are more than RemeshSliverShare of all tets. Its time is heal, adapt and
+// post, as refinement's is.
 Status remeshAcrossFormerInterfaces(const ColorLoopSetup& setup, const AdaptationOptions& options,
   int boxesPerAxis, const std::vector<char>& formerInterface, AdaptationState& state,
   AdaptationSummary& summary, PhaseReporter& reporter);

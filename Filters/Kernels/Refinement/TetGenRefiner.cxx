@@ -476,15 +476,24 @@ std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) con
     {
       return "TetGen returned an invalid or inverted tetrahedron";
     }
-    double shortest = HUGE_VAL;
+    double shortest = HUGE_VAL, longest = 0;
     for (const auto& edge : TetEdgeCorners)
     {
-      shortest = std::min(
-        shortest, squaredDistance(out.pointlist + 3 * c[edge[0]], out.pointlist + 3 * c[edge[1]]));
+      const double squared =
+        squaredDistance(out.pointlist + 3 * c[edge[0]], out.pointlist + 3 * c[edge[1]]);
+      shortest = std::min(shortest, squared);
+      longest = std::max(longest, squared);
     }
     if (std::sqrt(shortest) < shortestAllowed)
     {
       return "TetGen returned a tetrahedron with an edge of rounding-noise length";
+    }
+    // Flat within rounding, as the mesh checks count a degenerate tet: TetGen can join four
+    // coplanar points of a grid when it meshes them anew (switch p).
+    if (signedVolume6(out.pointlist + 3 * c[0], out.pointlist + 3 * c[1], out.pointlist + 3 * c[2],
+          out.pointlist + 3 * c[3]) <= 1e-12 * longest * std::sqrt(longest))
+    {
+      return "TetGen returned a flat tetrahedron";
     }
   }
   std::vector<std::array<int, 3>> keptInOutput;
