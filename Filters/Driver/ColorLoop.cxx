@@ -57,7 +57,7 @@ TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& stat
   {
     DelaunayParameters parameters = iteration.setup.delaunay;
     const auto& failing = iteration.options.simulateTetGenFailureIn;
-    parameters.simulateFailure =
+    parameters.simulateFailure = !iteration.setup.remeshSweep && // names refinement partitions
       std::find(failing.begin(), failing.end(), partition) != failing.end();
     const PartitionTetGenRunner& runner = iteration.setup.runTetGen;
     const TetGenRunner runTetGen = [&runner, partition](
