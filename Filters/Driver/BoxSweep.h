@@ -7,13 +7,47 @@
 #define cgmesh_BoxSweep_h
 
 #include "ColorLoop.h"
+#include "ParallelFor.h"
 #include "Partitioning/BoxPartitions.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace cgmesh
 {
+
+// Flags, in `flagged` (sized to every point), the corners of the tets of the first `candidates`
+// partitions that pass `selects`, looked at in parallel; returns how many tets passed. The tets
+// a sweep works on: only those touching a flagged point go into its boxes.
+template <typename Selects>
+std::int64_t flagCornersOfSelectedTets(int threads, const AdaptationState& state,
+  std::size_t candidates, const Selects& selects, std::vector<char>& flagged, Status& status)
+{
+  std::vector<std::vector<PointId>> corners(candidates);
+  status = runParallel(threads, static_cast<std::int64_t>(candidates),
+    [&](std::int64_t p)
+    {
+      for (const Tet& tet : state.partitions[p].tets)
+      {
+        if (selects(tet))
+        {
+          corners[p].insert(corners[p].end(), tet.begin(), tet.end());
+        }
+      }
+    });
+  flagged.resize(state.coordinates.size() / 3, 0);
+  std::int64_t selected = 0;
+  for (const std::vector<PointId>& list : corners)
+  {
+    selected += static_cast<std::int64_t>(list.size() / 4);
+    for (PointId p : list)
+    {
+      flagged[p] = 1;
+    }
+  }
+  return selected;
+}
 
 // Moves the tets that touch a point flagged in `moving` into the boxes of `layout` and runs
 // `sweep` over them (its graph, colouring and colour count are the boxes'). The other tets stay

@@ -1,7 +1,6 @@
 #include "ImprovementSweep.h"
 
 #include "BoxSweep.h"
-#include "ParallelFor.h"
 
 namespace cgmesh
 {
@@ -23,30 +22,15 @@ std::int64_t flagCornersOfWork(const ColorLoopSetup& setup,
     points.globalSizes = &state.sizes;
     points.provisionalSizes = &noProvisionalSizes;
   }
-  std::vector<std::vector<PointId>> corners(candidates);
-  status = runParallel(setup.threads, static_cast<std::int64_t>(candidates),
-    [&](std::int64_t p)
-    {
-      for (const Tet& tet : state.partitions[p].tets)
-      {
-        if (touchesFlaggedPoint(tet, formerInterface) &&
-          needsImprovement(tet, points, setup.improvement))
-        {
-          corners[p].insert(corners[p].end(), tet.begin(), tet.end());
-        }
-      }
-    });
   flagged.assign(state.coordinates.size() / 3, 0);
-  std::int64_t found = 0;
-  for (const std::vector<PointId>& list : corners)
-  {
-    found += static_cast<std::int64_t>(list.size() / 4);
-    for (PointId p : list)
+  return flagCornersOfSelectedTets(
+    setup.threads, state, candidates,
+    [&](const Tet& tet)
     {
-      flagged[p] = 1;
-    }
-  }
-  return found;
+      return touchesFlaggedPoint(tet, formerInterface) &&
+        needsImprovement(tet, points, setup.improvement);
+    },
+    flagged, status);
 }
 
 // One improvement sweep over box partitions; `sweepIndex` 0 lays the boxes from the bounding

@@ -2,7 +2,6 @@
 
 #include "BoxSweep.h"
 #include "Core/TetQuality.h"
-#include "ParallelFor.h"
 
 #include <algorithm>
 #include <atomic>
@@ -12,34 +11,6 @@ namespace cgmesh
 {
 namespace
 {
-
-// For each partition, in parallel, the corners of its tets that pass `selects`; then their union
-// in `flagged`.
-template <typename Selects>
-Status flagCornersOf(
-  int threads, const AdaptationState& state, const Selects& selects, std::vector<char>& flagged)
-{
-  std::vector<std::vector<PointId>> corners(state.partitions.size());
-  const Status status = runParallel(threads, static_cast<std::int64_t>(state.partitions.size()),
-    [&](std::int64_t p)
-    {
-      for (const Tet& tet : state.partitions[p].tets)
-      {
-        if (selects(tet))
-        {
-          corners[p].insert(corners[p].end(), tet.begin(), tet.end());
-        }
-      }
-    });
-  for (const std::vector<PointId>& list : corners)
-  {
-    for (PointId p : list)
-    {
-      flagged[p] = 1;
-    }
-  }
-  return status;
-}
 
 // Flags the corners of the tets at former interface vertices under SweepSliverDegrees, then grows
 // the flags SweepRings times by the corners of every tet touching one. Flags nothing unless the
@@ -51,8 +22,9 @@ Status flagAroundSlivers(int threads, const std::vector<char>& formerInterface,
   const std::vector<double>& xyz = state.coordinates;
   flagged.assign(xyz.size() / 3, 0);
   std::atomic<std::int64_t> severe(0);
-  Status status = flagCornersOf(
-    threads, state,
+  Status status = Status::success();
+  flagCornersOfSelectedTets(
+    threads, state, state.partitions.size(),
     [&](const Tet& tet)
     {
       if (!touchesFlaggedPoint(tet, formerInterface))
@@ -67,7 +39,7 @@ Status flagAroundSlivers(int threads, const std::vector<char>& formerInterface,
       }
       return angle < SweepSliverDegrees;
     },
-    flagged);
+    flagged, status);
   std::size_t tets = 0;
   for (const PartitionMesh& partition : state.partitions)
   {
@@ -81,8 +53,9 @@ Status flagAroundSlivers(int threads, const std::vector<char>& formerInterface,
   for (int ring = 0; ring < SweepRings && status.ok() && found; ++ring)
   {
     const std::vector<char> before = flagged;
-    status = flagCornersOf(
-      threads, state, [&](const Tet& tet) { return touchesFlaggedPoint(tet, before); }, flagged);
+    flagCornersOfSelectedTets(
+      threads, state, state.partitions.size(),
+      [&](const Tet& tet) { return touchesFlaggedPoint(tet, before); }, flagged, status);
   }
   return status;
 }

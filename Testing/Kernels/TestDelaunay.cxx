@@ -503,6 +503,32 @@ void test_tampered_tetgen_output_is_refused()
   CHECK_EQUAL(calls.size(), std::size_t(1));
 }
 
+// The sliver-laden block without its inner cube (region 2): a partition around a cavity of others.
+PartitionMesh partitionAroundCavity(const TetMesh& mesh)
+{
+  PartitionMesh partition;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    if (mesh.regions[t] != 2)
+    {
+      partition.tets.push_back(mesh.tets[t]);
+      partition.regions.push_back(mesh.regions[t]);
+      partition.parentCells.push_back(t);
+    }
+  }
+  return partition;
+}
+
+// A TetGen runner in one worker that checks each call meshes anew (switches starting pA).
+TetGenRunner remeshingRunner(TetGenWorkerPool& pool)
+{
+  return [&pool](const tetgenio& in, const std::string& switches, tetgenio& out)
+  {
+    CHECK(switches.rfind("pA", 0) == 0);
+    return pool.run(0, in, switches, out);
+  };
+}
+
 // A partition full of slivers is meshed anew from its kept faces and points (switch p), not
 // refined (switch r): TetGen cannot split a kept face, and refining slivers that rest on them
 // costs it minutes and leaves worse ones. The partition encloses a cavity (tets of other
@@ -511,32 +537,20 @@ void test_sliver_laden_partition_is_meshed_anew_around_a_cavity()
 {
   const TetMesh mesh = sliverLadenBlock(1500);
   CHECK(shareBelow(mesh.tets, mesh.coordinates, RemeshSliverDegrees) > 10 * RemeshSliverShare);
-  PartitionMesh partition;
+  PartitionMesh partition = partitionAroundCavity(mesh);
   double cavityVolume = 0;
   std::map<int, double> volumeOfRegion;
   for (CellId t = 0; t < mesh.numberOfTets(); ++t)
   {
     const double volume = signedVolume6(mesh, mesh.tets[t]) / 6.0;
-    if (mesh.regions[t] == 2)
-    {
-      cavityVolume += volume;
-      continue;
-    }
-    partition.tets.push_back(mesh.tets[t]);
-    partition.regions.push_back(mesh.regions[t]);
-    partition.parentCells.push_back(t);
-    volumeOfRegion[mesh.regions[t]] += volume;
+    (mesh.regions[t] == 2 ? cavityVolume : volumeOfRegion[mesh.regions[t]]) += volume;
   }
   CHECK(cavityVolume > 0.01);
   const DelaunayParameters parameters{ 0.5 / mesh.numberOfTets(), 2.0, false };
   const PartitionSetting setting(mesh, parameters);
   const RefinementContext& context = setting.context;
   TetGenWorkerPool pool(1);
-  const TetGenRunner runner = [&](const tetgenio& in, const std::string& switches, tetgenio& out)
-  {
-    CHECK(switches.rfind("pA", 0) == 0);
-    return pool.run(0, in, switches, out);
-  };
+  const TetGenRunner runner = remeshingRunner(pool);
   PartitionRefinement refinement;
   DelaunayOutcome outcome;
   const std::size_t inputTets = partition.tets.size();
@@ -630,16 +644,7 @@ void test_sliver_laden_mesh_conforms_across_threads()
 void test_sweep_box_drops_only_interior_points_refinement_made()
 {
   const TetMesh mesh = sliverLadenBlock(1500);
-  PartitionMesh partition;
-  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
-  {
-    if (mesh.regions[t] != 2) // region 2 is the cavity
-    {
-      partition.tets.push_back(mesh.tets[t]);
-      partition.regions.push_back(mesh.regions[t]);
-      partition.parentCells.push_back(t);
-    }
-  }
+  const PartitionMesh partition = partitionAroundCavity(mesh);
   // The points of kept faces, found here on their own: faces of one tet of the partition, or of
   // two tets of different regions.
   std::map<std::array<PointId, 3>, std::vector<std::size_t>> tetsOfFace;
@@ -689,11 +694,7 @@ void test_sweep_box_drops_only_interior_points_refinement_made()
   const DelaunayParameters parameters{ 0.5 / mesh.numberOfTets(), 2.0, false };
   const PartitionSetting setting(mesh, parameters);
   TetGenWorkerPool pool(1);
-  const TetGenRunner runner = [&](const tetgenio& in, const std::string& switches, tetgenio& out)
-  {
-    CHECK(switches.rfind("pA", 0) == 0);
-    return pool.run(0, in, switches, out);
-  };
+  const TetGenRunner runner = remeshingRunner(pool);
   PartitionRefinement refinement;
   DelaunayOutcome outcome;
   PartitionMesh remeshed = partition;
