@@ -1,0 +1,515 @@
+#include "Refinement/TetGenSession.h"
+
+#include "Refinement/EnclosedPieces.h"
+
+#include "Core/Geometry.h"
+#include "Core/TetLocator.h"
+
+#define TETLIBRARY
+#include <tetgen.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cgmesh
+{
+namespace
+{
+
+// The hull faces and the faces between two attributes of TetGen's output, sorted, from the face
+// neighbours it returned (switch n), each checked rather than trusted: a neighbour must be another
+// tet sharing exactly one face with this one, through no face claimed twice, and must name this
+// tet back. False when a check fails. Linear in the output and free of hashing, which matters:
+// the output is 20 times the size of the faces it is compared against.
+bool keptFacesOfOutput(const tetgenio& io, std::vector<std::array<int, 3>>& kept)
+{
+  if (io.neighborlist == nullptr)
+  {
+    return false;
+  }
+  kept.clear();
+  const int count = io.numberoftetrahedra;
+  for (int t = 0; t < count; ++t)
+  {
+    const int* corners = io.tetrahedronlist + 4 * t;
+    const int* neighbours = io.neighborlist + 4 * t;
+    int sharedFaces = 0; // bit k: the face opposite corner k has a neighbour
+    for (int slot = 0; slot < 4; ++slot)
+    {
+      const int n = neighbours[slot];
+      if (n == -1)
+      {
+        continue;
+      }
+      if (n < 0 || n >= count || n == t)
+      {
+        return false;
+      }
+      const int* other = io.tetrahedronlist + 4 * n;
+      int missing = -1, common = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        if (std::find(other, other + 4, corners[k]) != other + 4)
+        {
+          ++common;
+        }
+        else
+        {
+          missing = k;
+        }
+      }
+      const int* back = io.neighborlist + 4 * n;
+      if (common != 3 || (sharedFaces & (1 << missing)) || std::find(back, back + 4, t) == back + 4)
+      {
+        return false;
+      }
+      sharedFaces |= 1 << missing;
+      if (t < n && io.tetrahedronattributelist[t] != io.tetrahedronattributelist[n])
+      {
+        kept.push_back(sortedFace(corners, missing));
+      }
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      if (!(sharedFaces & (1 << k)))
+      {
+        kept.push_back(sortedFace(corners, k));
+      }
+    }
+  }
+  std::sort(kept.begin(), kept.end());
+  return true;
+}
+
+} // namespace
+
+void TetGenSession::prepareInput(tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order,
+  TetGenInput input, PointId firstDroppablePoint)
+{
+  this->numberPoints();
+  this->Remesh = input != TetGenInput::Tets;
+  this->DropsPoints = input == TetGenInput::KeptFacesAndOwnPoints;
+  if (input == TetGenInput::KeptFacesAndOwnPoints)
+  {
+    this->passOnlyKeptPoints(keptFaces, firstDroppablePoint);
+  }
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(this->Numbering.passed);
+  in.pointlist = new REAL[3 * in.numberofpoints];
+  for (int i = 0; i < in.numberofpoints; ++i)
+  {
+    std::copy_n(this->coordinatesOf(this->Numbering.idOfLocal[i]), 3, in.pointlist + 3 * i);
+  }
+  if (this->Context.sizes)
+  {
+    // TetGen's sizing input (switch m): it splits a tet whose circumradius exceeds the size at
+    // one of its corners, and interpolates sizes at the points it inserts.
+    in.numberofpointmtrs = 1;
+    in.pointmtrlist = new REAL[in.numberofpoints];
+    for (int i = 0; i < in.numberofpoints; ++i)
+    {
+      in.pointmtrlist[i] = TetGenRadiusPerSize * this->sizeOf(this->Numbering.idOfLocal[i]);
+    }
+  }
+  this->KeptFaces.clear();
+  for (const Face& face : keptFaces)
+  {
+    std::array<int, 3> local;
+    for (int k = 0; k < 3; ++k)
+    {
+      local[k] = this->Numbering.localOfId.at(face[k]);
+    }
+    std::sort(local.begin(), local.end());
+    this->KeptFaces.push_back(local);
+  }
+  std::sort(this->KeptFaces.begin(), this->KeptFaces.end());
+  if (this->Remesh)
+  {
+    this->fillFacetsAndRegions(in, keptFaces, order);
+  }
+  else
+  {
+    this->fillTetsAndFaces(in, keptFaces, order);
+  }
+}
+
+void TetGenSession::numberPoints()
+{
+  for (const Tet& tet : this->Partition.tets)
+  {
+    for (PointId p : tet)
+    {
+      if (this->Numbering.localOfId.emplace(p, static_cast<int>(this->Numbering.idOfLocal.size()))
+            .second)
+      {
+        this->Numbering.idOfLocal.push_back(p);
+        this->Numbering.tetOfLocal.push_back(
+          static_cast<std::size_t>(&tet - this->Partition.tets.data()));
+      }
+    }
+  }
+  this->Numbering.passed = this->Numbering.idOfLocal.size();
+}
+
+void TetGenSession::passOnlyKeptPoints(
+  const std::vector<Face>& keptFaces, PointId firstDroppablePoint)
+{
+  LocalNumbering& numbering = this->Numbering;
+  std::vector<char> keep(numbering.idOfLocal.size(), 0);
+  for (std::size_t i = 0; i < keep.size(); ++i)
+  {
+    const PointId id = numbering.idOfLocal[i];
+    keep[i] = id >= 0 && id < firstDroppablePoint; // provisional (negative) ids are new points
+  }
+  for (const Face& face : keptFaces)
+  {
+    for (PointId p : face)
+    {
+      keep[static_cast<std::size_t>(numbering.localOfId.at(p))] = 1;
+    }
+  }
+  std::vector<std::size_t> order(keep.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return keep[i] != 0; });
+  LocalNumbering renumbered;
+  for (std::size_t old : order)
+  {
+    renumbered.localOfId.emplace(
+      numbering.idOfLocal[old], static_cast<int>(renumbered.idOfLocal.size()));
+    renumbered.idOfLocal.push_back(numbering.idOfLocal[old]);
+    renumbered.tetOfLocal.push_back(numbering.tetOfLocal[old]);
+    renumbered.passed += keep[old] ? 1 : 0;
+  }
+  numbering = std::move(renumbered);
+}
+
+std::vector<int> TetGenSession::localCorners() const
+{
+  std::vector<int> corners;
+  corners.reserve(4 * this->Partition.tets.size());
+  for (const Tet& tet : this->Partition.tets)
+  {
+    for (PointId p : tet)
+    {
+      corners.push_back(this->Numbering.localOfId.at(p));
+    }
+  }
+  return corners;
+}
+
+void TetGenSession::fillTetsAndFaces(
+  tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order) const
+{
+  const std::vector<int> corners = this->localCorners();
+  in.numberoftetrahedra = static_cast<int>(this->Partition.tets.size());
+  in.numberofcorners = 4;
+  in.tetrahedronlist = new int[4 * in.numberoftetrahedra];
+  in.numberoftetrahedronattributes = 1;
+  in.tetrahedronattributelist = new REAL[in.numberoftetrahedra];
+  for (int t = 0; t < in.numberoftetrahedra; ++t)
+  {
+    const std::size_t source = order.sourceOf(static_cast<std::size_t>(t));
+    std::copy_n(corners.data() + 4 * source, 4, in.tetrahedronlist + 4 * t);
+    in.tetrahedronattributelist[t] = this->regionOfTet(source);
+  }
+  // The faces to keep, each its own facet (a distinct marker): TetGen merges coplanar
+  // neighbouring boundary triangles otherwise and may flip their shared edge, which the
+  // partition across would not see.
+  in.numberoftrifaces = static_cast<int>(keptFaces.size());
+  in.trifacelist = new int[3 * keptFaces.size()];
+  in.trifacemarkerlist = new int[keptFaces.size()];
+  for (std::size_t f = 0; f < keptFaces.size(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      in.trifacelist[3 * f + k] = this->Numbering.localOfId.at(keptFaces[f][k]);
+    }
+    in.trifacemarkerlist[f] = static_cast<int>(f) + 1;
+  }
+}
+
+void TetGenSession::fillFacetsAndRegions(
+  tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order)
+{
+  std::vector<int> faceCorners;
+  faceCorners.reserve(3 * keptFaces.size());
+  in.facetmarkerlist = new int[keptFaces.size()];
+  for (std::size_t f = 0; f < keptFaces.size(); ++f)
+  {
+    const std::size_t source = order.sourceOf(f);
+    for (PointId p : keptFaces[source])
+    {
+      faceCorners.push_back(this->Numbering.localOfId.at(p));
+    }
+    in.facetmarkerlist[f] = static_cast<int>(source) + 1;
+  }
+  setTriangleFacets(in, faceCorners.data(), static_cast<int>(keptFaces.size()));
+  const std::vector<int> corners = this->localCorners();
+  const std::vector<int> pieceOfTet = enclosedPieces(corners, this->KeptFaces);
+  const int pieceCount =
+    pieceOfTet.empty() ? 0 : *std::max_element(pieceOfTet.begin(), pieceOfTet.end()) + 1;
+  std::vector<double> localCoordinates; // of every local point, dropped ones too
+  localCoordinates.reserve(3 * this->Numbering.idOfLocal.size());
+  for (PointId id : this->Numbering.idOfLocal)
+  {
+    const double* xyz = this->coordinatesOf(id);
+    localCoordinates.insert(localCoordinates.end(), xyz, xyz + 3);
+  }
+  const std::vector<std::array<double, 3>> inside =
+    pointInsideEachPiece(corners, pieceOfTet, pieceCount, localCoordinates.data());
+  this->RegionOfAttribute.assign(this->Partition.regions.begin(), this->Partition.regions.end());
+  if (this->RegionOfAttribute.empty())
+  {
+    this->RegionOfAttribute.push_back(0);
+  }
+  std::sort(this->RegionOfAttribute.begin(), this->RegionOfAttribute.end());
+  this->RegionOfAttribute.erase(
+    std::unique(this->RegionOfAttribute.begin(), this->RegionOfAttribute.end()),
+    this->RegionOfAttribute.end());
+  std::vector<int> regionOfPiece(static_cast<std::size_t>(pieceCount));
+  for (std::size_t t = 0; t < pieceOfTet.size(); ++t)
+  {
+    regionOfPiece[static_cast<std::size_t>(pieceOfTet[t])] = this->regionOfTet(t);
+  }
+  in.numberofregions = pieceCount;
+  in.regionlist = new REAL[5 * static_cast<std::size_t>(pieceCount)];
+  for (int piece = 0; piece < pieceCount; ++piece)
+  {
+    REAL* entry = in.regionlist + 5 * piece;
+    std::copy_n(inside[static_cast<std::size_t>(piece)].data(), 3, entry);
+    const auto rank = std::lower_bound(this->RegionOfAttribute.begin(),
+      this->RegionOfAttribute.end(), regionOfPiece[static_cast<std::size_t>(piece)]);
+    entry[3] = 1.0 + static_cast<double>(rank - this->RegionOfAttribute.begin());
+    entry[4] = -1.0; // no volume bound of its own
+  }
+}
+
+bool TetGenSession::regionOfOutputTet(const tetgenio& out, int t, int& region) const
+{
+  const long attribute = std::lround(out.tetrahedronattributelist[t]);
+  if (!this->Remesh)
+  {
+    region = static_cast<int>(attribute);
+    return true;
+  }
+  if (attribute < 1 || attribute > static_cast<long>(this->RegionOfAttribute.size()))
+  {
+    return false;
+  }
+  region = this->RegionOfAttribute[static_cast<std::size_t>(attribute - 1)];
+  return true;
+}
+
+std::map<int, double> TetGenSession::regionVolumesOfInput() const
+{
+  std::map<int, double> volumes;
+  for (std::size_t t = 0; t < this->Partition.tets.size(); ++t)
+  {
+    const Tet& tet = this->Partition.tets[t];
+    volumes[this->regionOfTet(t)] += signedVolume6(this->coordinatesOf(tet[0]),
+      this->coordinatesOf(tet[1]), this->coordinatesOf(tet[2]), this->coordinatesOf(tet[3]));
+  }
+  return volumes;
+}
+
+std::map<int, double> TetGenSession::regionVolumesOfOutput(const tetgenio& out) const
+{
+  std::map<int, double> volumes;
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+  {
+    int region = 0;
+    if (this->regionOfOutputTet(out, t, region))
+    {
+      const int* c = out.tetrahedronlist + 4 * t;
+      volumes[region] += signedVolume6(out.pointlist + 3 * c[0], out.pointlist + 3 * c[1],
+        out.pointlist + 3 * c[2], out.pointlist + 3 * c[3]);
+    }
+  }
+  return volumes;
+}
+
+std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) const
+{
+  if (out.numberofpoints < in.numberofpoints || out.numberoftetrahedra < 1 ||
+    out.numberofcorners != 4 || out.numberoftetrahedronattributes < 1 || out.firstnumber != 0)
+  {
+    return "TetGen returned an incomplete mesh";
+  }
+  if (!std::equal(in.pointlist, in.pointlist + 3 * in.numberofpoints, out.pointlist))
+  {
+    return "TetGen moved or renumbered input points";
+  }
+  // Edges this much shorter than the partition are rounding noise, not refinement: TetGen can
+  // leave clusters of such points on some inputs.
+  double low[3] = { in.pointlist[0], in.pointlist[1], in.pointlist[2] };
+  double high[3] = { low[0], low[1], low[2] };
+  for (int p = 0; p < in.numberofpoints; ++p)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      low[axis] = std::min(low[axis], in.pointlist[3 * p + axis]);
+      high[axis] = std::max(high[axis], in.pointlist[3 * p + axis]);
+    }
+  }
+  const double shortestAllowed = 1e-8 * std::sqrt(squaredDistance(low, high));
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+  {
+    const int* c = out.tetrahedronlist + 4 * t;
+    if (*std::min_element(c, c + 4) < 0 || *std::max_element(c, c + 4) >= out.numberofpoints ||
+      !(signedVolume6(out.pointlist + 3 * c[0], out.pointlist + 3 * c[1], out.pointlist + 3 * c[2],
+          out.pointlist + 3 * c[3]) > 0))
+    {
+      return "TetGen returned an invalid or inverted tetrahedron";
+    }
+    double shortest = HUGE_VAL, longest = 0;
+    for (const auto& edge : TetEdgeCorners)
+    {
+      const double squared =
+        squaredDistance(out.pointlist + 3 * c[edge[0]], out.pointlist + 3 * c[edge[1]]);
+      shortest = std::min(shortest, squared);
+      longest = std::max(longest, squared);
+    }
+    if (std::sqrt(shortest) < shortestAllowed)
+    {
+      return "TetGen returned a tetrahedron with an edge of rounding-noise length";
+    }
+    // Flat within rounding, as the mesh checks count a degenerate tet. TetGen leaves such tets
+    // among coplanar grid points; refinement's are mended by the improvement that follows, but
+    // the sweep's boxes, meshed anew without their interior points, are improved only at former
+    // interface vertices.
+    if (this->DropsPoints &&
+      signedVolume6(out.pointlist + 3 * c[0], out.pointlist + 3 * c[1], out.pointlist + 3 * c[2],
+        out.pointlist + 3 * c[3]) <= 1e-12 * longest * std::sqrt(longest))
+    {
+      return "TetGen returned a flat tetrahedron";
+    }
+  }
+  std::vector<std::array<int, 3>> keptInOutput;
+  if (!keptFacesOfOutput(out, keptInOutput))
+  {
+    return "TetGen returned inconsistent face neighbours";
+  }
+  if (keptInOutput != this->KeptFaces)
+  {
+    return "TetGen changed the partition boundary or a material interface";
+  }
+  const auto before = this->regionVolumesOfInput();
+  const auto after = this->regionVolumesOfOutput(out);
+  if (before.size() != after.size())
+  {
+    return "TetGen changed the set of regions";
+  }
+  for (const auto& region : before)
+  {
+    const auto found = after.find(region.first);
+    if (found == after.end() ||
+      std::abs(found->second - region.second) > 1e-9 * std::abs(region.second))
+    {
+      return "TetGen changed a region's volume";
+    }
+  }
+  return std::string();
+}
+
+void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
+  PartitionRefinement& refinement, DelaunayOutcome& outcome) const
+{
+  const int inputPointCount = static_cast<int>(this->Numbering.passed);
+  TetLocator locator(this->Partition.tets, [this](PointId id) { return this->coordinatesOf(id); });
+  locator.buildFaceNeighbours(this->Partition.tets);
+
+  // The partition's tets: all of them, but for the cavities of other partitions that remeshing
+  // fills too (and the points TetGen inserted there).
+  std::vector<int> regionOfOutput(static_cast<std::size_t>(out.numberoftetrahedra));
+  std::vector<char> kept(static_cast<std::size_t>(out.numberoftetrahedra), 0);
+  std::vector<char> used(static_cast<std::size_t>(out.numberofpoints), 0);
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+  {
+    if (this->regionOfOutputTet(out, t, regionOfOutput[static_cast<std::size_t>(t)]))
+    {
+      kept[static_cast<std::size_t>(t)] = 1;
+      for (int k = 0; k < 4; ++k)
+      {
+        used[static_cast<std::size_t>(out.tetrahedronlist[4 * t + k])] = 1;
+      }
+    }
+  }
+
+  // New points first: their ids are needed for the tets. Placing reads the old tets, whose
+  // coordinates live in refinement.newCoordinates, so collect the additions before appending.
+  std::vector<PointId> idOfOutput(
+    this->Numbering.idOfLocal.begin(), this->Numbering.idOfLocal.begin() + inputPointCount);
+  std::vector<std::size_t> tetOfOutput(
+    this->Numbering.tetOfLocal.begin(), this->Numbering.tetOfLocal.begin() + inputPointCount);
+  std::vector<double> coordinates;
+  std::vector<PointSource> sources;
+  std::vector<double> sizes;
+  for (int i = inputPointCount; i < out.numberofpoints; ++i)
+  {
+    if (!used[static_cast<std::size_t>(i)])
+    {
+      idOfOutput.push_back(-1); // named by no kept tet
+      tetOfOutput.push_back(tetOfOutput.back());
+      continue;
+    }
+    // TetGen inserts points near the ones before them, often in the same old tet.
+    const TetLocator::Location where =
+      locator.locateFrom(out.pointlist + 3 * i, tetOfOutput.back());
+    PointSource source;
+    for (int k = 0; k < 4; ++k)
+    {
+      source.points[k] = this->Partition.tets[where.tet][k];
+      source.weights[k] = where.barycentric[k];
+    }
+    sources.push_back(source);
+    coordinates.insert(coordinates.end(), out.pointlist + 3 * i, out.pointlist + 3 * i + 3);
+    if (this->Context.sizes)
+    {
+      double size = 0; // interpolated like the point's data
+      for (int k = 0; k < 4; ++k)
+      {
+        size += source.weights[k] * this->sizeOf(source.points[k]);
+      }
+      sizes.push_back(size);
+    }
+    idOfOutput.push_back(-static_cast<PointId>(refinement.newPointSources.size() + sources.size()));
+    tetOfOutput.push_back(where.tet);
+  }
+
+  PartitionMesh refined;
+  refined.tets.reserve(out.numberoftetrahedra);
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+  {
+    if (!kept[static_cast<std::size_t>(t)])
+    {
+      continue;
+    }
+    const int* c = out.tetrahedronlist + 4 * t;
+    double centroid[3] = { 0, 0, 0 };
+    for (int k = 0; k < 4; ++k)
+    {
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        centroid[axis] += 0.25 * out.pointlist[3 * c[k] + axis];
+      }
+    }
+    refined.tets.push_back(
+      { idOfOutput[c[0]], idOfOutput[c[1]], idOfOutput[c[2]], idOfOutput[c[3]] });
+    // The centroid lies a step or two from the old tet that holds the tet's first corner.
+    refined.parentCells.push_back(
+      this->Partition.parentCells[locator.locateFrom(centroid, tetOfOutput[c[0]]).tet]);
+    if (!this->Partition.regions.empty())
+    {
+      refined.regions.push_back(regionOfOutput[static_cast<std::size_t>(t)]);
+    }
+  }
+  refinement.newCoordinates.insert(
+    refinement.newCoordinates.end(), coordinates.begin(), coordinates.end());
+  refinement.newPointSources.insert(
+    refinement.newPointSources.end(), sources.begin(), sources.end());
+  refinement.newSizes.insert(refinement.newSizes.end(), sizes.begin(), sizes.end());
+  outcome.tetgenPoints = static_cast<std::int64_t>(sources.size());
+  partition = std::move(refined);
+}
+
+} // namespace cgmesh
