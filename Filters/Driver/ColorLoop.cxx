@@ -40,6 +40,8 @@ struct IterationContext
   const AdaptationOptions& options;
   RefinementContext refinement;
   std::vector<PartitionRefinement> refinements;
+  // Refinement loops: the partitions changed since their last improvement (see improvesNow).
+  std::vector<char>* awaitingImprovement = nullptr;
 };
 
 TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& state, int partition,
@@ -233,15 +235,29 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
   return status;
 }
 
-// A partition that a later refinement pass left as it was (no point made, none healed) is as the
-// previous pass's improvement left it, and neighbours never change its tets: improving it again
-// would repeat the same attempts. With a size field the last pass is always such a pass, and on
-// the graded Big cube it cost a sixth of the improvement time (6.6 s against 5.5 s).
-bool unchangedSinceLastImprovement(
-  const ColorLoopSetup& setup, int iterationIndex, const PartitionRefinement& refinement)
+// Whether partition p is improved in this pass. Refinement passes leave a partition's improvement
+// to the pass that finds it settled (no point made in it, no split healed) or to the last pass
+// allowed: improving it while later passes still split its tets repeats the work on their
+// children. On the FinFET with a size field (5 passes, 1,024 partitions, 2 threads) improvement
+// took 12.0 s instead of 15.9, for the same quality (minimum dihedral p1 21.7 against 21.9
+// degrees, 93.8% of edges within the field's bounds against 93.9%). Sweeps always improve.
+bool improvesNow(IterationContext& iteration, int iterationIndex, int p)
 {
-  return setup.refine && iterationIndex > 0 && refinement.newPointSources.empty() &&
-    refinement.healedSplits == 0;
+  if (!iteration.setup.refine)
+  {
+    return true;
+  }
+  const PartitionRefinement& refinement = iteration.refinements[p];
+  const bool changed = !refinement.newPointSources.empty() || refinement.healedSplits != 0;
+  const bool lastPass = iterationIndex == iteration.setup.numberOfIterations - 1;
+  char& awaiting = (*iteration.awaitingImprovement)[p];
+  awaiting = awaiting || changed;
+  if (!awaiting || (changed && !lastPass))
+  {
+    return false;
+  }
+  awaiting = 0;
+  return true;
 }
 
 Status improveMembers(IterationContext& iteration, const std::vector<int>& members,
@@ -254,7 +270,7 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
     {
       const int p = members[i];
       PartitionRefinement& refinement = iteration.refinements[p];
-      if (unchangedSinceLastImprovement(iteration.setup, iterationIndex, refinement))
+      if (!improvesNow(iteration, iterationIndex, p))
       {
         return;
       }
@@ -410,6 +426,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
   const auto members = partitionsByColor(*setup.colorOfPartition, setup.numberOfColors);
   const int steps = setup.numberOfIterations * setup.numberOfColors;
   std::size_t pointsAtLastPass = 0;
+  std::vector<char> awaitingImprovement(state.partitions.size(), 1); // none improved yet
   const bool refinesPartitions = setup.refine && !setup.remeshSweep; // its figures per partition
   if (refinesPartitions)
   {
@@ -431,7 +448,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
       ? findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3))
       : std::vector<char>();
     IterationContext context{ setup, options, RefinementContext(),
-      std::vector<PartitionRefinement>(state.partitions.size()) };
+      std::vector<PartitionRefinement>(state.partitions.size()), &awaitingImprovement };
     context.refinement.coordinates = &state.coordinates;
     context.refinement.interfaceVertex = &interfaceVertex;
     context.refinement.squaredThreshold = setup.squaredThreshold;

@@ -198,6 +198,47 @@ void test_device_refinement_with_improvement()
   CHECK(cgmesh_test::identicalResults(improved, parallel));
 }
 
+// Over several refinement passes a partition is improved once it has settled, or in the last
+// pass allowed: both when the passes converge and when the iteration limit stops them, the
+// output is improved as much as after a single pass (worse worst tets, or none of the operations,
+// would show a partition left out), and the same for any thread count.
+void test_improvement_over_several_passes()
+{
+  TetMesh input;
+  CHECK(generateFinFet(15000, input).ok());
+  for (const int iterations : { 2, 10 })
+  {
+    AdaptationOptions options;
+    options.numberOfPartitions = 32;
+    options.edgeLengthFactor = 0.3; // more than two passes to converge
+    options.numberOfIterations = iterations;
+    options.numberOfThreads = 1;
+    options.improveQuality = false;
+    AdaptationResult plain;
+    CHECK(adaptMesh(input, options, plain).ok());
+    options.improveQuality = true;
+    AdaptationResult improved;
+    CHECK(adaptMesh(input, options, improved).ok());
+    CHECK_EQUAL(improved.summary.refinementConverged, iterations == 10);
+    CHECK(improved.summary.iterationsRun >= 2);
+
+    cgmesh_test::checkValidAndConserving(input, improved.mesh);
+    CHECK(
+      improved.summary.edgeRemovals + improved.summary.faceSwaps + improved.summary.vertexMoves > 0);
+    std::cout << iterations << " iterations allowed, " << improved.summary.iterationsRun
+              << " run: worst mean ratio " << worstMeanRatio(plain.mesh) << " -> "
+              << worstMeanRatio(improved.mesh) << ", tets below the target "
+              << tetsBelowTarget(plain.mesh) << " -> " << tetsBelowTarget(improved.mesh) << "\n";
+    CHECK(worstMeanRatio(improved.mesh) > worstMeanRatio(plain.mesh));
+    CHECK(2 * tetsBelowTarget(improved.mesh) < tetsBelowTarget(plain.mesh));
+
+    options.numberOfThreads = 2;
+    AdaptationResult parallel;
+    CHECK(adaptMesh(input, options, parallel).ok());
+    CHECK(cgmesh_test::identicalResults(improved, parallel));
+  }
+}
+
 // The FinFET meshed by TetGen (radius-edge bound only, so slivers stay) has poor tets before
 // refinement. Improving it first (ImproveInput, the default) keeps every invariant, exact linear
 // point data through the moved input points and thread independence, and leaves fewer poor tets
@@ -252,6 +293,7 @@ int main()
   test_smoothing_moves_free_vertex_only();
   test_edge_removal_three_to_two();
   test_device_refinement_with_improvement();
+  test_improvement_over_several_passes();
   test_input_improved_before_refinement();
   return cgmesh_test::finish("TestQualityImprovement");
 }
