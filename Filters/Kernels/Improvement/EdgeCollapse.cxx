@@ -34,15 +34,6 @@ void sortUnique(std::vector<T>& values)
   values.erase(std::unique(values.begin(), values.end()), values.end());
 }
 
-template <typename T>
-std::vector<T> intersection(const std::vector<T>& first, const std::vector<T>& second)
-{
-  std::vector<T> common;
-  std::set_intersection(
-    first.begin(), first.end(), second.begin(), second.end(), std::back_inserter(common));
-  return common;
-}
-
 bool holds(const Corners& corners, int v)
 {
   return std::find(corners.begin(), corners.end(), v) != corners.end();
@@ -89,36 +80,17 @@ bool Improver::hasEdgeLongerThanSize(const Corners& tet) const
 // The link condition of edge (a, b): the vertices and edges the links of a and of b share are
 // exactly those of the link of the edge. Without it a collapse can glue two sheets of the mesh
 // together (two tets on one face, an edge in a pinch), which no orientation test sees.
-bool Improver::linkConditionHolds(int a, int b) const
+//
+// The edge's link is its ring R (the other two corners of each tet holding a and b) with the ring
+// edges. So: every common neighbour of a and b lies in R, and then every edge of both links not
+// touching a or b joins two vertices of R, and must be a ring edge. Small lists and a mark per
+// vertex do it; sorting both links took a third of the coarsening time.
+bool Improver::linkConditionHolds(int a, int b)
 {
-  struct Link
-  {
-    std::vector<int> vertices;
-    std::vector<Edge> edges;
-  };
-  const auto linkOf = [this](int v)
-  {
-    Link link;
-    for (int t : this->Incident[v])
-    {
-      int face[3], n = 0;
-      for (int w : this->Tets[t])
-      {
-        if (w != v)
-        {
-          face[n++] = w;
-        }
-      }
-      link.vertices.insert(link.vertices.end(), face, face + 3);
-      link.edges.push_back(edgeOf(face[0], face[1]));
-      link.edges.push_back(edgeOf(face[1], face[2]));
-      link.edges.push_back(edgeOf(face[0], face[2]));
-    }
-    sortUnique(link.vertices);
-    sortUnique(link.edges);
-    return link;
-  };
-  Link edgeLink; // of (a, b): the other two corners of each tet holding both
+  std::vector<int>& ring = this->LinkRing;
+  std::vector<Edge>& ringEdges = this->LinkRingEdges;
+  ring.clear();
+  ringEdges.clear();
   for (int t : this->Incident[a])
   {
     if (!holds(this->Tets[t], b))
@@ -133,26 +105,71 @@ bool Improver::linkConditionHolds(int a, int b) const
         other[n++] = w;
       }
     }
-    edgeLink.vertices.insert(edgeLink.vertices.end(), other, other + 2);
-    edgeLink.edges.push_back(edgeOf(other[0], other[1]));
+    ring.insert(ring.end(), other, other + 2);
+    ringEdges.push_back(edgeOf(other[0], other[1]));
   }
-  sortUnique(edgeLink.vertices);
-  sortUnique(edgeLink.edges);
-  const Link linkA = linkOf(a), linkB = linkOf(b);
-  for (int v : intersection(linkA.vertices, linkB.vertices))
+  const auto inRing = [&ring](int v)
   {
-    if (v != a && v != b &&
-      !std::binary_search(edgeLink.vertices.begin(), edgeLink.vertices.end(), v))
+    return std::find(ring.begin(), ring.end(), v) != ring.end();
+  };
+
+  if (++this->LinkStamp == 0) // wrapped: no old mark may match
+  {
+    std::fill(this->NeighbourMark.begin(), this->NeighbourMark.end(), 0);
+    this->LinkStamp = 1;
+  }
+  for (int t : this->Incident[a])
+  {
+    for (int w : this->Tets[t])
     {
-      return false;
+      this->NeighbourMark[w] = this->LinkStamp;
     }
   }
-  for (const Edge& e : intersection(linkA.edges, linkB.edges))
+  for (int t : this->Incident[b])
   {
-    const bool touchesEnds = e.first == a || e.first == b || e.second == a || e.second == b;
-    if (!touchesEnds && !std::binary_search(edgeLink.edges.begin(), edgeLink.edges.end(), e))
+    for (int w : this->Tets[t])
     {
-      return false;
+      if (w != a && w != b && this->NeighbourMark[w] == this->LinkStamp && !inRing(w))
+      {
+        return false; // a common neighbour off the ring
+      }
+    }
+  }
+  // The edges of a vertex's link among ring vertices: those of the faces opposite it.
+  const auto ringEdgesOfLink = [&](int v, std::vector<Edge>& edges)
+  {
+    edges.clear();
+    for (int t : this->Incident[v])
+    {
+      int face[3], n = 0;
+      for (int w : this->Tets[t])
+      {
+        if (w != v)
+        {
+          face[n++] = w;
+        }
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const int x = face[k], y = face[(k + 1) % 3];
+        if (x != a && x != b && y != a && y != b && inRing(x) && inRing(y))
+        {
+          edges.push_back(edgeOf(x, y));
+        }
+      }
+    }
+  };
+  ringEdgesOfLink(a, this->LinkEdgesOfA);
+  ringEdgesOfLink(b, this->LinkEdgesOfB);
+  for (const Edge& e : this->LinkEdgesOfA)
+  {
+    const auto has = [&e](const std::vector<Edge>& edges)
+    {
+      return std::find(edges.begin(), edges.end(), e) != edges.end();
+    };
+    if (has(this->LinkEdgesOfB) && !has(ringEdges))
+    {
+      return false; // an edge of both links off the ring
     }
   }
   return true;
@@ -166,12 +183,10 @@ bool Improver::collapseVertex(int a)
   {
     return false;
   }
-  const std::vector<int> ball = this->Incident[a];
-  std::vector<std::pair<double, int>> candidates;
-  double worstBefore = std::numeric_limits<double>::max();
-  for (int t : ball)
+  std::vector<std::pair<double, int>>& candidates = this->CollapseCandidates;
+  candidates.clear();
+  for (int t : this->Incident[a])
   {
-    worstBefore = std::min(worstBefore, this->Qualities[t]);
     for (int b : this->Tets[t])
     {
       if (b != a && this->isShort(a, b))
@@ -180,13 +195,20 @@ bool Improver::collapseVertex(int a)
       }
     }
   }
+  if (candidates.empty())
+  {
+    return false;
+  }
   sortUnique(candidates); // shortest first, ties by vertex: deterministic
-  const double floor = std::min(this->Parameters.collapseQualityFloor, worstBefore);
+  const std::vector<int> ball = this->Incident[a];
+  double worstBefore = std::numeric_limits<double>::max();
   std::vector<Corners> replaced;
   for (int t : ball)
   {
+    worstBefore = std::min(worstBefore, this->Qualities[t]);
     replaced.push_back(this->Tets[t]);
   }
+  const double floor = std::min(this->Parameters.collapseQualityFloor, worstBefore);
   const double volumeBefore = this->totalVolume(replaced);
   const double largestBefore = this->largestVolume(ball);
 
@@ -203,10 +225,11 @@ bool Improver::collapseVertex(int a)
         continue; // flattened onto the collapsed edge: it vanishes
       }
       std::replace(corners.begin(), corners.end(), a, b);
-      valid = this->orientation(corners[0], corners[1], corners[2], corners[3]) > 0 &&
+      // No edge longer than sqrt(2) h, which refinement would split again. Looked at first: it
+      // turns down nine in ten of the collapses refused, and costs a fraction of the quality.
+      valid = !this->longerThanSizeAt(b, corners.data(), corners.size()) &&
+        this->orientation(corners[0], corners[1], corners[2], corners[3]) > 0 &&
         this->quality(corners) >= floor;
-      // No edge longer than sqrt(2) h, which refinement would split again.
-      valid = valid && !this->longerThanSizeAt(b, corners.data(), corners.size());
       created.push_back(corners);
       sources.push_back(ball[i]);
     }
@@ -227,6 +250,47 @@ bool Improver::collapseVertex(int a)
     return true;
   }
   return false;
+}
+
+// One pass of coarsening over the vertices in order. Only a vertex with a short edge can go, and
+// edges change only where a collapse made tets: the ends of the short edges at the start and the
+// corners of the tets each collapse made are the only vertices worth visiting. Visiting every
+// vertex, as the same pass without the marks does, looked at 24 balls per collapse on the FinFET.
+void Improver::coarsen(ImprovementStatistics& statistics)
+{
+  std::vector<char> worthVisiting(this->IdOf.size(), 0);
+  for (std::size_t t = 0; t < this->Tets.size(); ++t)
+  {
+    if (!this->Alive[t])
+    {
+      continue;
+    }
+    const Corners& tet = this->Tets[t];
+    for (const auto& corners : TetEdgeCorners)
+    {
+      const int a = tet[corners[0]], b = tet[corners[1]];
+      if (this->isShort(a, b))
+      {
+        worthVisiting[a] = worthVisiting[b] = 1;
+      }
+    }
+  }
+  for (int v = 0; v < static_cast<int>(this->IdOf.size()); ++v)
+  {
+    const std::size_t tetsBefore = this->Tets.size();
+    if (!worthVisiting[v] || !this->collapseVertex(v))
+    {
+      continue;
+    }
+    ++statistics.edgeCollapses;
+    for (std::size_t t = tetsBefore; t < this->Tets.size(); ++t)
+    {
+      for (int w : this->Tets[t])
+      {
+        worthVisiting[w] = 1;
+      }
+    }
+  }
 }
 
 } // namespace improvement

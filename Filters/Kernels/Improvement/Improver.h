@@ -11,6 +11,7 @@
 #include "Improvement/QualityImprover.h"
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace cgmesh
@@ -75,8 +76,9 @@ private:
   // sqrt(2) h (never without a size field: then nothing is looked at).
   bool longerThanSizeAt(int v, const int* neighbours, std::size_t count) const;
   bool hasEdgeLongerThanSize(const Corners& tet) const;
+  void coarsen(ImprovementStatistics& statistics);
   bool collapseVertex(int a);
-  bool linkConditionHolds(int a, int b) const;
+  bool linkConditionHolds(int a, int b);
 
   PartitionMesh& Partition;
   const PartitionPoints& Points;
@@ -91,6 +93,12 @@ private:
   std::vector<char> Fixed;
   std::vector<char> Moved;
   ImprovementParameters Parameters;
+  // Scratch of collapseVertex and linkConditionHolds, kept for their memory.
+  std::vector<std::pair<double, int>> CollapseCandidates;
+  std::vector<int> LinkRing;
+  std::vector<std::pair<int, int>> LinkRingEdges, LinkEdgesOfA, LinkEdgesOfB;
+  std::vector<unsigned> NeighbourMark; // LinkStamp where a vertex neighbours the collapsed end
+  unsigned LinkStamp = 0;
 };
 
 } // namespace improvement

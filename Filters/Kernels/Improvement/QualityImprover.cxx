@@ -60,18 +60,44 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
   : Partition(partition)
   , Points(points)
 {
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  // Local numbers first, so that each vertex's incidence list is allocated once at its size
+  // (with room for what the operations add): growing them one tet at a time was a fifth of
+  // building the improver.
+  const std::size_t tetCount = partition.tets.size();
+  std::vector<Corners> local(tetCount);
+  this->LocalOf.reserve(tetCount / 4 + 16);
+  for (std::size_t t = 0; t < tetCount; ++t)
   {
-    Corners corners;
     for (int k = 0; k < 4; ++k)
     {
-      corners[k] = this->localVertex(partition.tets[t][k]);
+      local[t][k] = this->localVertex(partition.tets[t][k]);
     }
+  }
+  std::vector<int> tetsAt(this->IdOf.size(), 0);
+  for (const Corners& corners : local)
+  {
+    for (int v : corners)
+    {
+      ++tetsAt[v];
+    }
+  }
+  for (std::size_t v = 0; v < tetsAt.size(); ++v)
+  {
+    this->Incident[v].reserve(tetsAt[v] + 8);
+  }
+  this->Tets.reserve(tetCount);
+  this->Regions.reserve(tetCount);
+  this->Parents.reserve(tetCount);
+  this->Qualities.reserve(tetCount);
+  this->Alive.reserve(tetCount);
+  for (std::size_t t = 0; t < tetCount; ++t)
+  {
     this->addTet(
-      corners, partition.regions.empty() ? 0 : partition.regions[t], partition.parentCells[t]);
+      local[t], partition.regions.empty() ? 0 : partition.regions[t], partition.parentCells[t]);
   }
   this->Fixed.assign(this->IdOf.size(), 0);
   this->Moved.assign(this->IdOf.size(), 0);
+  this->NeighbourMark.assign(this->IdOf.size(), 0);
   // The corners of boundary faces (held by one tet) and material-interface faces stay. Grouped
   // in local numbers, whose table is half the size of one in global ids.
   if (this->Tets.empty())
@@ -541,14 +567,23 @@ bool Improver::smoothVertex(int v)
 void Improver::run(const ImprovementParameters& parameters, ImprovementStatistics& statistics)
 {
   this->Parameters = parameters;
+  std::int64_t changesBeforePass = 0;
+  const auto changes = [&statistics]
+  {
+    return statistics.edgeCollapses + statistics.edgeRemovals + statistics.faceSwaps +
+      statistics.vertexMoves;
+  };
   for (int pass = 0; pass < parameters.passes; ++pass)
   {
+    // A pass after one that changed nothing would repeat its attempts exactly.
+    if (pass > 0 && changes() == changesBeforePass)
+    {
+      break;
+    }
+    changesBeforePass = changes();
     if (parameters.coarsen)
     {
-      for (int v = 0; v < static_cast<int>(this->IdOf.size()); ++v)
-      {
-        statistics.edgeCollapses += this->collapseVertex(v);
-      }
+      this->coarsen(statistics);
     }
     if (!parameters.improve)
     {
@@ -621,30 +656,78 @@ void Improver::writeBack(std::vector<PointId>& movedPoints)
   }
 }
 
-// The tets that share a vertex with a flagged (poor or short-edged) tet: every operation on a
-// flagged tet (its edges' rings, its face neighbours, its vertices' stars, the balls of a
-// collapsed edge's ends) stays inside this neighbourhood. Template children of
-// good parents are good, so on refined meshes this is about half the partition (52% on the
-// FinFET), and building the improver's structures for it alone halves their cost.
-std::vector<char> neighbourhoodOf(const PartitionMesh& partition, const std::vector<char>& flagged)
+// Whether edge (a, b) is shorter than h / sqrt(2) (see Improver::isShort).
+bool isShortEdge(PointId a, PointId b, const PartitionPoints& points)
 {
-  PointIdSet flaggedVertices;
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  return shorterThanSize(
+    squaredDistance(points.at(a), points.at(b)), points.sizeAt(a), points.sizeAt(b));
+}
+
+bool hasShortEdge(const Tet& tet, const PartitionPoints& points)
+{
+  for (const auto& corners : TetEdgeCorners)
   {
-    if (flagged[t])
+    if (isShortEdge(tet[corners[0]], tet[corners[1]], points))
     {
-      for (PointId p : partition.tets[t])
+      return true;
+    }
+  }
+  return false;
+}
+
+bool isPoor(const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters)
+{
+  return parameters.improve &&
+    meanRatioBelow(points.at(tet[0]), points.at(tet[1]), points.at(tet[2]), points.at(tet[3]),
+      parameters.targetQuality);
+}
+
+// The vertices work starts from: every corner of a poor tet (edge removal, swaps and smoothing
+// reach them all) and, with coarsening, both ends of every short edge (a collapse rewrites the
+// ball of one and checks the link of the other). Counts the poor tets.
+PointIdSet verticesOfWork(const PartitionMesh& partition, const PartitionPoints& points,
+  const ImprovementParameters& parameters, std::int64_t& poorTets)
+{
+  PointIdSet vertices;
+  for (const Tet& tet : partition.tets)
+  {
+    if (isPoor(tet, points, parameters))
+    {
+      ++poorTets;
+      for (PointId p : tet)
       {
-        flaggedVertices.emplace(p, 0);
+        vertices.emplace(p, 0);
+      }
+      continue;
+    }
+    if (!parameters.coarsen)
+    {
+      continue;
+    }
+    for (const auto& corners : TetEdgeCorners)
+    {
+      if (isShortEdge(tet[corners[0]], tet[corners[1]], points))
+      {
+        vertices.emplace(tet[corners[0]], 0);
+        vertices.emplace(tet[corners[1]], 0);
       }
     }
   }
+  return vertices;
+}
+
+// The tets with a vertex of work: every operation stays inside them (the balls of the vertices
+// of work, the rings of their edges, the face neighbours of poor tets). Template children of
+// good parents are good, so on refined meshes this is a part of the partition, and building the
+// improver's structures for it alone saves most of their cost.
+std::vector<char> neighbourhoodOf(const PartitionMesh& partition, const PointIdSet& vertices)
+{
   std::vector<char> selected(partition.tets.size(), 0);
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
-    selected[t] = std::any_of(tet.begin(), tet.end(),
-      [&flaggedVertices](PointId p) { return flaggedVertices.contains(p); });
+    selected[t] =
+      std::any_of(tet.begin(), tet.end(), [&vertices](PointId p) { return vertices.contains(p); });
   }
   return selected;
 }
@@ -668,28 +751,6 @@ void appendMesh(PartitionMesh& to, const PartitionMesh& from)
   to.regions.insert(to.regions.end(), from.regions.begin(), from.regions.end());
 }
 
-// Whether an edge of `tet` is shorter than h / sqrt(2) (see Improver::isShort).
-bool hasShortEdge(const Tet& tet, const PartitionPoints& points)
-{
-  for (const auto& corners : TetEdgeCorners)
-  {
-    const PointId a = tet[corners[0]], b = tet[corners[1]];
-    if (shorterThanSize(
-          squaredDistance(points.at(a), points.at(b)), points.sizeAt(a), points.sizeAt(b)))
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-bool isPoor(const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters)
-{
-  return parameters.improve &&
-    meanRatioBelow(points.at(tet[0]), points.at(tet[1]), points.at(tet[2]), points.at(tet[3]),
-      parameters.targetQuality);
-}
-
 } // namespace improvement
 
 bool needsImprovement(
@@ -707,20 +768,10 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   {
     return Status::success();
   }
-  // The tets to work on: poor ones, and with coarsening those with an edge shorter than the size
-  // field asks.
-  std::vector<char> worked(partition.tets.size());
-  std::int64_t poorTets = 0, workedTets = 0;
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
-  {
-    const Tet& tet = partition.tets[t];
-    const bool poor = improvement::isPoor(tet, points, parameters);
-    poorTets += poor;
-    worked[t] = poor || (parameters.coarsen && improvement::hasShortEdge(tet, points));
-    workedTets += worked[t];
-  }
+  std::int64_t poorTets = 0;
+  const PointIdSet vertices = improvement::verticesOfWork(partition, points, parameters, poorTets);
   statistics.poorTets += poorTets;
-  if (workedTets == 0)
+  if (vertices.empty())
   {
     return Status::success(); // nothing to work on: skip building the local structures
   }
@@ -729,7 +780,7 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
     // The improver freezes the boundary of what it is given, so the neighbourhood's cut through
     // the partition stays as it is, and the tets outside it are untouched.
     PartitionMesh neighbourhood =
-      improvement::extractSelected(partition, improvement::neighbourhoodOf(partition, worked));
+      improvement::extractSelected(partition, improvement::neighbourhoodOf(partition, vertices));
     improvement::Improver improver(neighbourhood, points);
     improver.run(parameters, statistics);
     improver.writeBack(movedPoints);
