@@ -372,8 +372,16 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   }
   if (result.mesh.hasSizes())
   {
-    result.edgeLengthRatio = edgeLengthRatios(result.mesh);
-    summary.edgeSizes = measureEdgeSizes(result.mesh);
+    const ParallelFor parallelFor = parallelForOn(summary.plan.threads);
+    status = edgeLengthRatios(result.mesh, parallelFor, result.edgeLengthRatio);
+    if (status.ok())
+    {
+      status = measureEdgeSizes(result.mesh, parallelFor, summary.edgeSizes);
+    }
+    if (!status.ok())
+    {
+      return status;
+    }
   }
   reporter.progress(Stage::Merge, 1.0);
   return Status::success();

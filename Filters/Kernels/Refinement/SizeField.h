@@ -6,6 +6,7 @@
 #define cgmesh_SizeField_h
 
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 
 #include <array>
@@ -49,11 +50,14 @@ struct EdgeSizeReport
   std::array<std::int64_t, 6> histogram = {};
 };
 
-EdgeSizeReport measureEdgeSizes(const TetMesh& mesh);
+// Concurrently through `parallelFor`; the report is the same for any schedule.
+Status measureEdgeSizes(
+  const TetMesh& mesh, const ParallelFor& parallelFor, EdgeSizeReport& report);
 
 // Per tet: its longest edge over the mean size of its corners (0 where a corner lies outside a
 // refinement selection, see below).
-std::vector<double> edgeLengthRatios(const TetMesh& mesh);
+Status edgeLengthRatios(
+  const TetMesh& mesh, const ParallelFor& parallelFor, std::vector<double>& ratios);
 
 // Where refinement may happen: tets of the listed regions (empty: any region) whose bounding box
 // meets `box` (xmin, ymin, zmin, xmax, ymax, zmax; null: no box).
