@@ -160,6 +160,16 @@ std::int64_t tetsBelowTarget(const TetMesh& mesh)
   return below;
 }
 
+// Runs `options` on the input without improvement, then with it.
+void adaptWithoutAndWithImprovement(const TetMesh& input, AdaptationOptions options,
+  AdaptationResult& plain, AdaptationResult& improved)
+{
+  options.improveQuality = false;
+  CHECK(adaptMesh(input, options, plain).ok());
+  options.improveQuality = true;
+  CHECK(adaptMesh(input, options, improved).ok());
+}
+
 void test_device_refinement_with_improvement()
 {
   TetMesh input;
@@ -168,12 +178,9 @@ void test_device_refinement_with_improvement()
   options.numberOfPartitions = 32;
   options.edgeLengthFactor = 0.6; // splits only some edges: irregular templates to improve
   options.numberOfThreads = 1;
-  options.improveQuality = false;
-  AdaptationResult plain;
-  CHECK(adaptMesh(input, options, plain).ok());
+  AdaptationResult plain, improved;
+  adaptWithoutAndWithImprovement(input, options, plain, improved);
   options.improveQuality = true;
-  AdaptationResult improved;
-  CHECK(adaptMesh(input, options, improved).ok());
 
   cgmesh_test::checkValidAndConserving(input, improved.mesh);
   CHECK(
@@ -213,18 +220,16 @@ void test_improvement_over_several_passes()
     options.edgeLengthFactor = 0.3; // more than two passes to converge
     options.numberOfIterations = iterations;
     options.numberOfThreads = 1;
-    options.improveQuality = false;
-    AdaptationResult plain;
-    CHECK(adaptMesh(input, options, plain).ok());
+    AdaptationResult plain, improved;
+    adaptWithoutAndWithImprovement(input, options, plain, improved);
     options.improveQuality = true;
-    AdaptationResult improved;
-    CHECK(adaptMesh(input, options, improved).ok());
     CHECK_EQUAL(improved.summary.refinementConverged, iterations == 10);
     CHECK(improved.summary.iterationsRun >= 2);
 
     cgmesh_test::checkValidAndConserving(input, improved.mesh);
     CHECK(
-      improved.summary.edgeRemovals + improved.summary.faceSwaps + improved.summary.vertexMoves > 0);
+      improved.summary.edgeRemovals + improved.summary.faceSwaps + improved.summary.vertexMoves >
+      0);
     std::cout << iterations << " iterations allowed, " << improved.summary.iterationsRun
               << " run: worst mean ratio " << worstMeanRatio(plain.mesh) << " -> "
               << worstMeanRatio(improved.mesh) << ", tets below the target "
