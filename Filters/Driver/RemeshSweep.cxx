@@ -1,11 +1,11 @@
 #include "RemeshSweep.h"
 
 #include "BoxSweep.h"
+#include "Core/LowestRootSets.h"
 #include "Core/TetQuality.h"
 
 #include <algorithm>
 #include <atomic>
-#include <numeric>
 
 namespace cgmesh
 {
@@ -67,17 +67,7 @@ Status flagAroundSlivers(int threads, const std::vector<char>& formerInterface,
 std::vector<std::size_t> boxOfClusters(
   const AdaptationState& state, const std::vector<char>& flagged, const BoxLayout& layout)
 {
-  std::vector<PointId> parent(flagged.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&parent](PointId p)
-  {
-    while (parent[p] != p)
-    {
-      parent[p] = parent[parent[p]];
-      p = parent[p];
-    }
-    return p;
-  };
+  LowestRootSets<PointId> clusters(flagged.size());
   for (const PartitionMesh& partition : state.partitions)
   {
     for (const Tet& tet : partition.tets)
@@ -85,18 +75,10 @@ std::vector<std::size_t> boxOfClusters(
       PointId first = -1;
       for (PointId p : tet)
       {
-        if (!flagged[p])
+        if (flagged[p])
         {
-          continue;
+          first = first < 0 ? clusters.root(p) : clusters.join(first, p);
         }
-        if (first < 0)
-        {
-          first = root(p);
-          continue;
-        }
-        const PointId other = root(p);
-        parent[std::max(first, other)] = std::min(first, other);
-        first = std::min(first, other);
       }
     }
   }
@@ -105,7 +87,7 @@ std::vector<std::size_t> boxOfClusters(
   {
     if (flagged[p])
     {
-      box[p] = layout.boxAt(layout.indexOf(state.coordinates.data() + 3 * root(p)));
+      box[p] = layout.boxAt(layout.indexOf(state.coordinates.data() + 3 * clusters.root(p)));
     }
   }
   return box;

@@ -2,9 +2,9 @@
 
 #include "Core/FaceKey.h"
 #include "Core/Geometry.h"
+#include "Core/LowestRootSets.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace cgmesh
 {
@@ -13,33 +13,23 @@ std::vector<int> enclosedPieces(
   const std::vector<int>& corners, const std::vector<std::array<int, 3>>& keptFaces)
 {
   const std::size_t count = corners.size() / 4;
-  std::vector<std::size_t> parent(count);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  const auto root = [&parent](std::size_t t)
-  {
-    while (parent[t] != t)
-    {
-      parent[t] = parent[parent[t]];
-      t = parent[t];
-    }
-    return t;
-  };
+  // The lowest tet of a piece is its root, so the numbering below does not depend on the order
+  // the face table is visited in.
+  LowestRootSets<std::size_t> pieces(count);
   forEachDistinctFace(corners.data(), count,
     [&](const std::array<int, 3>& face, std::size_t first, std::size_t second, std::size_t shared)
     {
       if (shared == 2 && !std::binary_search(keptFaces.begin(), keptFaces.end(), face))
       {
-        // The smaller root wins, so that the numbering below does not depend on the table's order.
-        const std::size_t a = root(first), b = root(second);
-        parent[std::max(a, b)] = std::min(a, b);
+        pieces.join(first, second);
       }
     });
   std::vector<int> pieceOfTet(count, -1);
-  int pieces = 0;
+  int pieceCount = 0;
   for (std::size_t t = 0; t < count; ++t)
   {
-    const std::size_t r = root(t);
-    pieceOfTet[t] = r == t ? pieces++ : pieceOfTet[r];
+    const std::size_t r = pieces.root(t);
+    pieceOfTet[t] = r == t ? pieceCount++ : pieceOfTet[r];
   }
   return pieceOfTet;
 }

@@ -355,9 +355,13 @@ std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) con
   for (int t = 0; t < out.numberoftetrahedra; ++t)
   {
     const int* c = out.tetrahedronlist + 4 * t;
-    if (*std::min_element(c, c + 4) < 0 || *std::max_element(c, c + 4) >= out.numberofpoints ||
-      !(signedVolume6(out.pointlist + 3 * c[0], out.pointlist + 3 * c[1], out.pointlist + 3 * c[2],
-          out.pointlist + 3 * c[3]) > 0))
+    if (*std::min_element(c, c + 4) < 0 || *std::max_element(c, c + 4) >= out.numberofpoints)
+    {
+      return "TetGen returned an invalid or inverted tetrahedron";
+    }
+    const double volume6 = signedVolume6(out.pointlist + 3 * c[0], out.pointlist + 3 * c[1],
+      out.pointlist + 3 * c[2], out.pointlist + 3 * c[3]);
+    if (!(volume6 > 0))
     {
       return "TetGen returned an invalid or inverted tetrahedron";
     }
@@ -377,9 +381,7 @@ std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) con
     // among coplanar grid points; refinement's are mended by the improvement that follows, but
     // the sweep's boxes, meshed anew without their interior points, are improved only at former
     // interface vertices.
-    if (this->DropsPoints &&
-      signedVolume6(out.pointlist + 3 * c[0], out.pointlist + 3 * c[1], out.pointlist + 3 * c[2],
-        out.pointlist + 3 * c[3]) <= 1e-12 * longest * std::sqrt(longest))
+    if (this->DropsPoints && volume6 <= 1e-12 * longest * std::sqrt(longest))
     {
       return "TetGen returned a flat tetrahedron";
     }
