@@ -145,10 +145,11 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   return Status::success();
 }
 
-// The template table is built once per process (about 30 ms) and never changed afterwards.
-const TemplateTable& templateTable()
+// The template table is built once per process, by the first run's threads (about 30 ms on one),
+// and never changed afterwards.
+const TemplateTable& templateTable(int threads)
 {
-  static const TemplateTable templates;
+  static const TemplateTable templates(parallelForOn(threads));
   return templates;
 }
 
@@ -167,7 +168,7 @@ ColorLoopSetup refinementSetup(
   setup.numberOfIterations = delaunayToSizes ? 1 : options.numberOfIterations;
   setup.threads = plan.threads;
   setup.squaredThreshold = plan.edgeLengthThreshold * plan.edgeLengthThreshold;
-  setup.templates = &templateTable();
+  setup.templates = &templateTable(plan.threads);
   setup.orderCornersByCoordinates = options.orderCornersByCoordinates;
   setup.method = options.method;
   setup.delaunay.maximumVolume = plan.volumeBound;
@@ -271,8 +272,13 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
   {
     return status;
   }
-  formerInterface =
-    findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
+  status =
+    findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3),
+      parallelForOn(setup.threads), formerInterface);
+  if (!status.ok())
+  {
+    return status;
+  }
   ColorLoopSetup sweeps = setup;
   sweeps.stage = Stage::Sweep;
   sweeps.progressStart = 0;
@@ -312,13 +318,12 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   {
     return status;
   }
-  status = templateTable().status();
+  reporter.enter(Phase::Prepare);
+  status = templateTable(summary.plan.threads).status();
   if (!status.ok())
   {
     return status;
   }
-
-  reporter.enter(Phase::Prepare);
   AdaptationState state;
   state.partitions.resize(summary.plan.partitions);
   status = distributeTets(input, partitionOfCell, summary.plan.threads, state);

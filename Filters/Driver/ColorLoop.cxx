@@ -444,9 +444,17 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     // Recomputed per iteration: the last one's splits made new interface points. Only refinement
     // reads them (improvement freezes each partition's boundary itself).
     reporter.enter(setup.refine ? Phase::Heal : Phase::Improve);
-    const std::vector<char> interfaceVertex = setup.refine
-      ? findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3))
-      : std::vector<char>();
+    std::vector<char> interfaceVertex;
+    if (setup.refine)
+    {
+      const Status found =
+        findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3),
+          parallelForOn(setup.threads), interfaceVertex);
+      if (!found.ok())
+      {
+        return found;
+      }
+    }
     IterationContext context{ setup, options, RefinementContext(),
       std::vector<PartitionRefinement>(state.partitions.size()), &awaitingImprovement };
     context.refinement.coordinates = &state.coordinates;

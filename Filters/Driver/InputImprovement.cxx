@@ -1,6 +1,7 @@
 #include "InputImprovement.h"
 
 #include "ImprovementSweep.h"
+#include "ParallelFor.h"
 #include "Refinement/PartitionRefiner.h"
 
 namespace cgmesh
@@ -54,8 +55,14 @@ Status improveInputFirst(const AdaptationOptions& options, const std::vector<int
   {
     return Status::success(); // no tet below the target: nothing changed
   }
-  const std::vector<char> formerInterface =
-    findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
+  std::vector<char> formerInterface;
+  status =
+    findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3),
+      parallelForOn(setup.threads), formerInterface);
+  if (!status.ok())
+  {
+    return status;
+  }
   improveOnly.progressStart = 0.5;
   improveOnly.progressEnd = 1;
   status = improveAcrossFormerInterfaces(

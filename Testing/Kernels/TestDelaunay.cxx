@@ -109,7 +109,7 @@ TetMesh sliverLadenBlock(int pointCount)
 
 // The share of tets whose smallest dihedral angle is below `degrees`.
 double shareBelow(
-  const std::vector<Tet>& tets, const std::vector<double>& coordinates, double degrees)
+  const TetList& tets, const std::vector<double>& coordinates, double degrees)
 {
   std::size_t below = 0;
   for (const Tet& tet : tets)
@@ -570,7 +570,7 @@ void test_sliver_laden_partition_is_meshed_anew_around_a_cavity()
   };
   std::vector<char> used(coordinates.size() / 3, 0);
   std::map<int, double> volumeAfter;
-  std::vector<Tet> tets;
+  TetList tets;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     Tet tet;

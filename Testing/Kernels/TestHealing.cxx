@@ -27,8 +27,10 @@ struct ManualRun
 // partitions processed before.
 void processInOrder(ManualRun& run, const std::vector<int>& order, double threshold)
 {
-  const std::vector<char> interfaceVertex =
-    findInterfaceVertices(run.partitions, static_cast<PointId>(run.coordinates.size() / 3));
+  std::vector<char> interfaceVertex;
+  const Status found = findInterfaceVertices(
+    run.partitions, static_cast<PointId>(run.coordinates.size() / 3), runSerially, interfaceVertex);
+  CHECK(found.ok());
   RefinementContext context;
   context.coordinates = &run.coordinates;
   context.interfaceVertex = &interfaceVertex;

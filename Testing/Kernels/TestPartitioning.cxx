@@ -251,7 +251,7 @@ void test_box_regrouping_keeps_every_tet_in_serial_order()
 void checkHoldsExactGraph(
   const std::vector<PartitionMesh>& boxes, const TetMesh& mesh, const PartitionGraph& graph)
 {
-  std::vector<Tet> tets;
+  TetList tets;
   std::vector<int> boxOf;
   for (std::size_t b = 0; b < boxes.size(); ++b)
   {

@@ -12,7 +12,7 @@ namespace cgmesh
 // The tets one partition owns, with their region and input cell of origin.
 struct PartitionMesh
 {
-  std::vector<Tet> tets;
+  TetList tets;
   std::vector<int> regions; // empty when the input has no regions
   std::vector<CellId> parentCells;
 };

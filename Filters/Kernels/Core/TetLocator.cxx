@@ -10,7 +10,7 @@
 namespace cgmesh
 {
 
-TetLocator::TetLocator(const std::vector<Tet>& tets, CoordinatesOf coordinatesOf)
+TetLocator::TetLocator(const TetList& tets, CoordinatesOf coordinatesOf)
 {
   const std::size_t count = tets.size();
   this->Corners.resize(12 * count);
@@ -196,7 +196,7 @@ TetLocator::Location TetLocator::locate(const double* point) const
   return location;
 }
 
-void TetLocator::buildFaceNeighbours(const std::vector<Tet>& tets)
+void TetLocator::buildFaceNeighbours(const TetList& tets)
 {
   this->FaceNeighbours.assign(4 * tets.size(), -1);
   auto opposite = [&tets](std::size_t tet, const std::array<PointId, 3>& face)

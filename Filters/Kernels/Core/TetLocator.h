@@ -18,7 +18,7 @@ class TetLocator
 public:
   using CoordinatesOf = std::function<const double*(PointId)>;
 
-  TetLocator(const std::vector<Tet>& tets, CoordinatesOf coordinatesOf);
+  TetLocator(const TetList& tets, CoordinatesOf coordinatesOf);
 
   struct Location
   {
@@ -31,7 +31,7 @@ public:
   Location locate(const double* point) const;
 
   // Face neighbours for locateFrom(): one hashing pass over `tets`, those of the constructor.
-  void buildFaceNeighbours(const std::vector<Tet>& tets);
+  void buildFaceNeighbours(const TetList& tets);
 
   // A tet containing `point`, found by walking from tet `start` towards it across the face
   // opposite the most negative barycentric coordinate: a few steps for a point near `start`,

@@ -3,6 +3,8 @@
 #ifndef cgmesh_TetMesh_h
 #define cgmesh_TetMesh_h
 
+#include "Core/DefaultInitAllocator.h"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -13,11 +15,13 @@ namespace cgmesh
 using PointId = std::int64_t;
 using CellId = std::int64_t;
 using Tet = std::array<PointId, 4>;
+// Tets are always written after the array is sized: resize() leaves them unwritten.
+using TetList = std::vector<Tet, DefaultInitAllocator<Tet>>;
 
 struct TetMesh
 {
   std::vector<double> coordinates; // x, y, z per point
-  std::vector<Tet> tets;           // four point ids per tetrahedron
+  TetList tets;                    // four point ids per tetrahedron
   std::vector<int> regions;        // one material/region id per tet, or empty
   std::vector<double> sizes;       // target edge length h per point (a size field), or empty
 

@@ -3,6 +3,7 @@
 #include "Core/TetLocator.h"
 
 #include <algorithm>
+#include <atomic>
 #include <memory>
 #include <new>
 
@@ -150,6 +151,91 @@ void keepProvenanceOfUsedPoints(const PointProvenance& all, const std::vector<Po
   }
 }
 
+// Points no tet uses are dropped; the others keep their global order. A point on an interface
+// is marked by every partition that holds it, so the marks are atomic; counting and numbering
+// then run over fixed ranges of points, which makes the numbering independent of the schedule.
+Status numberUsedPoints(const std::vector<PartitionMesh>& partitions, PointId globalCount,
+  const ParallelFor& parallelFor, std::vector<PointId>& outputIdOf, PointId& outputCount)
+{
+  std::vector<std::atomic<unsigned char>> used(globalCount);
+  Status status = parallelFor(static_cast<std::int64_t>(partitions.size()),
+    [&](std::int64_t part)
+    {
+      for (const Tet& tet : partitions[part].tets)
+      {
+        for (PointId p : tet)
+        {
+          used[p].store(1, std::memory_order_relaxed);
+        }
+      }
+    });
+  const std::int64_t ranges = (globalCount + IndicesPerCopyRange - 1) / IndicesPerCopyRange;
+  std::vector<PointId> firstOfRange(ranges + 1, 0);
+  if (status.ok())
+  {
+    status = forEachRange(parallelFor, globalCount, IndicesPerCopyRange,
+      [&](std::int64_t begin, std::int64_t end)
+      {
+        PointId count = 0;
+        for (std::int64_t p = begin; p < end; ++p)
+        {
+          count += used[p].load(std::memory_order_relaxed);
+        }
+        firstOfRange[begin / IndicesPerCopyRange + 1] = count;
+      });
+  }
+  if (!status.ok())
+  {
+    return status;
+  }
+  for (std::int64_t range = 0; range < ranges; ++range)
+  {
+    firstOfRange[range + 1] += firstOfRange[range];
+  }
+  outputCount = firstOfRange.back();
+  outputIdOf.resize(globalCount);
+  return forEachRange(parallelFor, globalCount, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      PointId next = firstOfRange[begin / IndicesPerCopyRange];
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        outputIdOf[p] = used[p].load(std::memory_order_relaxed) ? next++ : -1;
+      }
+    });
+}
+
+// The used points' coordinates (and sizes) at their output ids.
+Status copyUsedPoints(const std::vector<double>& coordinates, const std::vector<double>* pointSizes,
+  const std::vector<PointId>& outputIdOf, PointId outputCount, const ParallelFor& parallelFor,
+  TetMesh& mesh)
+{
+  mesh.coordinates.resize(3 * outputCount);
+  if (pointSizes)
+  {
+    mesh.sizes.resize(outputCount);
+  }
+  return forEachRange(parallelFor, static_cast<std::int64_t>(outputIdOf.size()),
+    IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        const PointId to = outputIdOf[p];
+        if (to < 0)
+        {
+          continue;
+        }
+        std::copy(coordinates.begin() + 3 * p, coordinates.begin() + 3 * p + 3,
+          mesh.coordinates.begin() + 3 * to);
+        if (pointSizes)
+        {
+          mesh.sizes[to] = (*pointSizes)[p];
+        }
+      }
+    });
+}
+
 // Every partition's tets, renumbered, in partition order. Sized once and filled partition by
 // partition into disjoint ranges: growing three vectors tet by tet cost 0.39 s of the 0.44 s
 // merge of a 6 M-tet output, all of it on one thread.
@@ -199,40 +285,19 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   try
   {
     const PointId globalCount = static_cast<PointId>(coordinates.size() / 3);
-    std::vector<PointId> outputIdOf(globalCount, -1);
-    for (const PartitionMesh& partition : partitions)
-    {
-      for (const Tet& tet : partition.tets)
-      {
-        for (PointId p : tet)
-        {
-          outputIdOf[p] = 0;
-        }
-      }
-    }
+    std::vector<PointId> outputIdOf;
     PointId outputCount = 0;
-    for (PointId p = 0; p < globalCount; ++p)
-    {
-      if (outputIdOf[p] == 0)
-      {
-        outputIdOf[p] = outputCount++;
-      }
-    }
     merged = MergedMesh();
-    merged.removedPoints = globalCount - outputCount;
-
-    merged.mesh.coordinates.reserve(3 * outputCount);
-    for (PointId p = 0; p < globalCount; ++p)
+    Status status = numberUsedPoints(partitions, globalCount, parallelFor, outputIdOf, outputCount);
+    if (status.ok())
     {
-      if (outputIdOf[p] >= 0)
-      {
-        merged.mesh.coordinates.insert(merged.mesh.coordinates.end(), coordinates.begin() + 3 * p,
-          coordinates.begin() + 3 * p + 3);
-        if (pointSizes)
-        {
-          merged.mesh.sizes.push_back((*pointSizes)[p]);
-        }
-      }
+      merged.removedPoints = globalCount - outputCount;
+      status =
+        copyUsedPoints(coordinates, pointSizes, outputIdOf, outputCount, parallelFor, merged.mesh);
+    }
+    if (!status.ok())
+    {
+      return status;
     }
     if (withProvenance)
     {
@@ -241,11 +306,7 @@ Status mergePartitions(const std::vector<PartitionMesh>& partitions,
         inputPointCount, merged.provenance);
     }
 
-    const Status copied = copyTets(partitions, outputIdOf, merged, parallelFor);
-    if (!copied.ok())
-    {
-      return copied;
-    }
+    return copyTets(partitions, outputIdOf, merged, parallelFor);
   }
   catch (const std::bad_alloc&)
   {

@@ -48,8 +48,9 @@ struct RelocationInput
 
 // `withProvenance` false leaves merged.provenance empty (nothing to interpolate); then
 // `newPointSources` is not read and may be empty. `pointSizes`
-// (one size per global point) gives merged.mesh.sizes. `parallelFor` runs the per-partition
-// copies of the tets; the output does not depend on it.
+// (one size per global point) gives merged.mesh.sizes. `parallelFor` runs the marking and
+// numbering of the used points and the copies of points and tets; the output does not depend on
+// it. The provenance expansion is serial: it is only built when there is point data to carry.
 
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, PointId inputPointCount,

@@ -9,7 +9,7 @@ namespace
 
 // (point, partition) pairs for every point that lies in more than one partition, beyond the first
 // partition recorded in `firstPartition`.
-std::vector<std::pair<PointId, int>> collectExtraMemberships(const std::vector<Tet>& tets,
+std::vector<std::pair<PointId, int>> collectExtraMemberships(const TetList& tets,
   const std::vector<int>& partitionOfCell, std::vector<int>& firstPartition)
 {
   std::vector<std::pair<PointId, int>> extra;
@@ -39,7 +39,7 @@ std::vector<std::pair<PointId, int>> collectExtraMemberships(const std::vector<T
 
 } // namespace
 
-PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
+PartitionGraph buildPartitionGraph(const TetList& tets,
   const std::vector<int>& partitionOfCell, int numberOfPartitions, PointId numberOfPoints)
 {
   std::vector<int> firstPartition(numberOfPoints, -1);
@@ -116,7 +116,7 @@ PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
 PartitionGraph buildPartitionGraph(
   const std::vector<PartitionMesh>& partitions, PointId numberOfPoints)
 {
-  std::vector<Tet> tets;
+  TetList tets;
   std::vector<int> partitionOfTet;
   for (std::size_t p = 0; p < partitions.size(); ++p)
   {

@@ -26,7 +26,7 @@ struct PartitionGraph
   std::int64_t numberOfEdges() const { return static_cast<std::int64_t>(neighbours.size()) / 2; }
 };
 
-PartitionGraph buildPartitionGraph(const std::vector<Tet>& tets,
+PartitionGraph buildPartitionGraph(const TetList& tets,
   const std::vector<int>& partitionOfCell, int numberOfPartitions, PointId numberOfPoints);
 
 // The same for partitions held as meshes: partition p owns the tets of partitions[p].

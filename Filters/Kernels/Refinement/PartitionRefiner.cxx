@@ -4,6 +4,7 @@
 #include "Refinement/SizeField.h"
 
 #include <algorithm>
+#include <atomic>
 #include <new>
 
 namespace cgmesh
@@ -160,29 +161,48 @@ int shortestDiagonal(const SplitSession& session, const std::array<PointId, 10>&
 
 } // namespace
 
-std::vector<char> findInterfaceVertices(
-  const std::vector<PartitionMesh>& partitions, PointId numberOfPoints)
+Status findInterfaceVertices(const std::vector<PartitionMesh>& partitions, PointId numberOfPoints,
+  const ParallelFor& parallelFor, std::vector<char>& interfaceVertex)
 {
-  std::vector<int> firstPartition(numberOfPoints, -1);
-  std::vector<char> interfaceVertex(numberOfPoints, 0);
-  for (std::size_t part = 0; part < partitions.size(); ++part)
-  {
-    for (const Tet& tet : partitions[part].tets)
+  // Partitions are scanned concurrently: the first to reach a point claims it (owner: partition
+  // + 1, 0 while unclaimed), and any other partition that holds it marks it. Which partition
+  // claims a point depends on the schedule; whether a second one holds it does not.
+  std::vector<std::atomic<int>> owner(numberOfPoints);
+  std::vector<std::atomic<unsigned char>> shared(numberOfPoints);
+  Status status = parallelFor(static_cast<std::int64_t>(partitions.size()),
+    [&](std::int64_t part)
     {
-      for (PointId p : tet)
+      const int mine = static_cast<int>(part) + 1;
+      for (const Tet& tet : partitions[part].tets)
       {
-        if (firstPartition[p] < 0)
+        for (PointId p : tet)
         {
-          firstPartition[p] = static_cast<int>(part);
-        }
-        else if (firstPartition[p] != static_cast<int>(part))
-        {
-          interfaceVertex[p] = 1;
+          int seen = owner[p].load(std::memory_order_relaxed);
+          if (seen == mine ||
+            (seen == 0 && owner[p].compare_exchange_strong(seen, mine, std::memory_order_relaxed)))
+          {
+            continue;
+          }
+          if (seen != mine)
+          {
+            shared[p].store(1, std::memory_order_relaxed);
+          }
         }
       }
-    }
+    });
+  if (!status.ok())
+  {
+    return status;
   }
-  return interfaceVertex;
+  interfaceVertex.resize(numberOfPoints);
+  return forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        interfaceVertex[p] = static_cast<char>(shared[p].load(std::memory_order_relaxed));
+      }
+    });
 }
 
 std::int64_t predictTemplateTetCount(

@@ -8,6 +8,7 @@
 #include "Core/PartitionMesh.h"
 #include "Core/ProvisionalIds.h"
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 #include "Refinement/TemplateTable.h"
 
@@ -70,9 +71,10 @@ std::int64_t predictTemplateTetCount(
   const PartitionMesh& partition, const RefinementContext& context);
 
 // Marks the points that lie in tets of two or more partitions: only edges between two such points
-// can be shared, so only their splits go to outboxes.
-std::vector<char> findInterfaceVertices(
-  const std::vector<PartitionMesh>& partitions, PointId numberOfPoints);
+// can be shared, so only their splits go to outboxes. `parallelFor` scans the partitions; the
+// marks do not depend on it.
+Status findInterfaceVertices(const std::vector<PartitionMesh>& partitions, PointId numberOfPoints,
+  const ParallelFor& parallelFor, std::vector<char>& interfaceVertex);
 
 // Refines `partition` in place. The tets' corners are global ids; the result may reference
 // provisional ids (see above). Each tet is replaced where it stands, by itself or by its children

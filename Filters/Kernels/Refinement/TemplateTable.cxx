@@ -400,34 +400,55 @@ int TemplateTable::rankCode(const std::array<int, 4>& cornerRanks)
   return cornerRanks[0] | (cornerRanks[1] << 2) | (cornerRanks[2] << 4) | (cornerRanks[3] << 6);
 }
 
-TemplateTable::TemplateTable()
+TemplateTable::TemplateTable(const ParallelFor& parallelFor)
   : Partial(64 * 256)
 {
   const std::int64_t referenceOrientation = orient(0, 1, 2, 3);
+  std::vector<std::array<int, 4>> rankOrders;
   std::array<int, 4> ranks = { 0, 1, 2, 3 };
   do
   {
-    for (int mask = 1; mask < 63; ++mask)
-    {
-      std::vector<int> vertices = { 0, 1, 2, 3 };
-      for (int e = 0; e < 6; ++e)
-      {
-        if ((mask >> e) & 1)
-        {
-          vertices.push_back(4 + e);
-        }
-      }
-      std::vector<LocalTet> tets;
-      TemplateSearch search(vertices, boundaryTriangulation(mask, ranks));
-      if (!search.run(tets) || totalOrientation(tets) != referenceOrientation)
-      {
-        this->Validity = Status::failure(
-          ErrorKind::Internal, "no valid template for split mask " + std::to_string(mask));
-        return;
-      }
-      this->Partial[mask * 256 + rankCode(ranks)] = std::move(tets);
-    }
+    rankOrders.push_back(ranks);
   } while (std::next_permutation(ranks.begin(), ranks.end()));
+  // Each order fills its own entries; a failed search records its mask (0: none failed).
+  std::vector<int> failedMask(rankOrders.size(), 0);
+  this->Validity = parallelFor(static_cast<std::int64_t>(rankOrders.size()),
+    [&](std::int64_t order)
+    {
+      const std::array<int, 4>& orderRanks = rankOrders[order];
+      for (int mask = 1; mask < 63; ++mask)
+      {
+        std::vector<int> vertices = { 0, 1, 2, 3 };
+        for (int e = 0; e < 6; ++e)
+        {
+          if ((mask >> e) & 1)
+          {
+            vertices.push_back(4 + e);
+          }
+        }
+        std::vector<LocalTet> tets;
+        TemplateSearch search(vertices, boundaryTriangulation(mask, orderRanks));
+        if (!search.run(tets) || totalOrientation(tets) != referenceOrientation)
+        {
+          failedMask[order] = mask;
+          return;
+        }
+        this->Partial[mask * 256 + rankCode(orderRanks)] = std::move(tets);
+      }
+    });
+  if (!this->Validity.ok())
+  {
+    return;
+  }
+  for (int mask : failedMask)
+  {
+    if (mask != 0)
+    {
+      this->Validity = Status::failure(
+        ErrorKind::Internal, "no valid template for split mask " + std::to_string(mask));
+      return;
+    }
+  }
 
   for (int diagonal = 0; diagonal < 3; ++diagonal)
   {

@@ -188,7 +188,7 @@ double forecastDelaunayTets(double volume, double maximumVolume)
   return 3.0 * volume / maximumVolume;
 }
 
-double forecastDelaunayTetsForSizes(const std::vector<Tet>& tets,
+double forecastDelaunayTetsForSizes(const TetList& tets,
   const std::vector<double>& coordinates, const std::vector<double>& sizes)
 {
   double total = 0;
