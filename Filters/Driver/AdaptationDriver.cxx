@@ -130,7 +130,12 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   reporter.progress(Stage::Partition, 0.8);
 
   reporter.enter(Phase::Graph);
-  graph = buildPartitionGraph(input.tets, partitionOfCell, plan.partitions, input.numberOfPoints());
+  status = buildPartitionGraph(input.tets, partitionOfCell, plan.partitions, input.numberOfPoints(),
+    parallelForOn(plan.threads), graph);
+  if (!status.ok())
+  {
+    return status;
+  }
   summary.interfacePoints = graph.interfacePoints;
   reporter.progress(Stage::Partition, 0.9);
 

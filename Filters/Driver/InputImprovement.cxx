@@ -74,7 +74,12 @@ Status improveInputFirst(const AdaptationOptions& options, const std::vector<int
   returnTetsToPartitions(state, partitionOfCell, summary.plan.partitions);
 
   reporter.enter(Phase::Graph);
-  graph = buildPartitionGraph(state.partitions, static_cast<PointId>(state.coordinates.size() / 3));
+  status = buildPartitionGraph(state.partitions, static_cast<PointId>(state.coordinates.size() / 3),
+    parallelForOn(setup.threads), graph);
+  if (!status.ok())
+  {
+    return status;
+  }
   summary.interfacePoints = graph.interfacePoints;
   reporter.enter(Phase::Color);
   status = colorPartitions(graph, options.coloring, setup.threads, summary.colorOfPartition);

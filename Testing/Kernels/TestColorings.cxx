@@ -4,8 +4,10 @@
 #include "Coloring/ColoringSupport.h"
 #include "Coloring/PartitionColoring.h"
 #include "CubeGenerator.h"
+#include "FinFetGenerator.h"
 #include "ParallelFor.h"
 #include "Partitioning/MeshPartitioner.h"
+#include "Partitioning/PartitionGraph.h"
 #include "TestHarness.h"
 
 #include <algorithm>
@@ -68,7 +70,11 @@ PartitionGraph meshPartitionGraph(int cubeCells, int partitions)
   CHECK(generateKuhnCube(cubeCells, mesh).ok());
   std::vector<int> partitionOfCell;
   CHECK(partitionMesh(mesh, partitions, partitionOfCell).ok());
-  return buildPartitionGraph(mesh.tets, partitionOfCell, partitions, mesh.numberOfPoints());
+  PartitionGraph graph;
+  CHECK(buildPartitionGraph(
+    mesh.tets, partitionOfCell, partitions, mesh.numberOfPoints(), runSerially, graph)
+          .ok());
+  return graph;
 }
 
 double balance(const std::vector<int>& colors)
@@ -152,11 +158,96 @@ void test_failing_parallel_task_is_reported_as_such()
 
 } // namespace
 
+// The graph by its definition: two partitions are adjacent when some point lies in tets of both.
+std::vector<std::pair<int, int>> adjacentPairsByDefinition(
+  const TetMesh& mesh, const std::vector<int>& partitionOfCell)
+{
+  std::vector<std::vector<int>> partitionsOfPoint(mesh.numberOfPoints());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    for (PointId p : mesh.tets[t])
+    {
+      partitionsOfPoint[p].push_back(partitionOfCell[t]);
+    }
+  }
+  std::vector<std::pair<int, int>> pairs;
+  for (std::vector<int>& partitions : partitionsOfPoint)
+  {
+    std::sort(partitions.begin(), partitions.end());
+    partitions.erase(std::unique(partitions.begin(), partitions.end()), partitions.end());
+    for (int a : partitions)
+    {
+      for (int b : partitions)
+      {
+        if (a != b)
+        {
+          pairs.emplace_back(a, b);
+        }
+      }
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+// The partition graph is built from concurrent scans that race to claim points: for any schedule
+// it must be the graph of the definition, from tets with a partition each and from partition
+// meshes. The FinFET's partitions are unstructured and many of its points lie in four or more.
+void test_partition_graph_is_exact_for_any_schedule()
+{
+  TetMesh mesh;
+  CHECK(generateFinFet(30000, mesh).ok());
+  const int partitions = 64;
+  std::vector<int> partitionOfCell;
+  CHECK(partitionMesh(mesh, partitions, partitionOfCell).ok());
+  // Tets of one partition spread over many scan ranges: interleave the mesh's order.
+  TetList tets(mesh.tets.size());
+  std::vector<int> partitionOfTet(mesh.tets.size());
+  for (std::size_t t = 0; t < tets.size(); ++t)
+  {
+    const std::size_t from = (t * 7919) % tets.size();
+    tets[t] = mesh.tets[from];
+    partitionOfTet[t] = partitionOfCell[from];
+  }
+  std::vector<PartitionMesh> meshes(partitions);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    meshes[partitionOfCell[t]].tets.push_back(mesh.tets[t]);
+  }
+  const auto expected = adjacentPairsByDefinition(mesh, partitionOfCell);
+  CHECK(!expected.empty());
+  for (const ParallelFor& executor :
+    { ParallelFor(runSerially), threadedExecutor(2), threadedExecutor(4), reversedExecutor() })
+  {
+    PartitionGraph fromTets, fromMeshes;
+    CHECK(buildPartitionGraph(
+      tets, partitionOfTet, partitions, mesh.numberOfPoints(), executor, fromTets)
+            .ok());
+    CHECK(buildPartitionGraph(meshes, mesh.numberOfPoints(), executor, fromMeshes).ok());
+    for (const PartitionGraph* graph : { &fromTets, &fromMeshes })
+    {
+      std::vector<std::pair<int, int>> pairs;
+      for (int a = 0; a < graph->numberOfPartitions; ++a)
+      {
+        CHECK(std::is_sorted(graph->neighboursOf(a), graph->neighboursOf(a) + graph->degree(a)));
+        for (int k = 0; k < graph->degree(a); ++k)
+        {
+          pairs.emplace_back(a, graph->neighboursOf(a)[k]);
+        }
+      }
+      CHECK(pairs == expected);
+      CHECK_EQUAL(graph->interfacePoints, fromTets.interfacePoints);
+    }
+  }
+}
+
 int main()
 {
   test_failing_parallel_task_is_reported_as_such();
   test_all_colorings_are_proper_and_deterministic();
   test_edge_cases();
+  test_partition_graph_is_exact_for_any_schedule();
   test_balanced_colorings_beat_greedy();
   return cgmesh_test::finish("TestColorings");
 }

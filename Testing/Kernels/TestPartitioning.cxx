@@ -258,8 +258,10 @@ void checkHoldsExactGraph(
     tets.insert(tets.end(), boxes[b].tets.begin(), boxes[b].tets.end());
     boxOf.insert(boxOf.end(), boxes[b].tets.size(), static_cast<int>(b));
   }
-  const PartitionGraph exact =
-    buildPartitionGraph(tets, boxOf, static_cast<int>(boxes.size()), mesh.numberOfPoints());
+  PartitionGraph exact;
+  CHECK(buildPartitionGraph(
+    tets, boxOf, static_cast<int>(boxes.size()), mesh.numberOfPoints(), runSerially, exact)
+          .ok());
   CHECK_EQUAL(graph.numberOfPartitions, exact.numberOfPartitions);
   for (int b = 0; b < std::min(graph.numberOfPartitions, exact.numberOfPartitions); ++b)
   {

@@ -354,8 +354,8 @@ Status buildBoxGraph(const std::vector<PartitionMesh>& boxes,
   const int farthest = reach.empty() ? 0 : *std::max_element(reach.begin(), reach.end());
   if (farthest > 3)
   {
-    graph = buildPartitionGraph(boxes, static_cast<PointId>(coordinates.size() / 3));
-    return Status::success();
+    return buildPartitionGraph(
+      boxes, static_cast<PointId>(coordinates.size() / 3), parallelFor, graph);
   }
 
   // Corners' bounds reach `farthest` boxes beyond their own box at most, so two that meet lie at

@@ -4,6 +4,8 @@
 #define cgmesh_PartitionGraph_h
 
 #include "Core/PartitionMesh.h"
+#include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 
 #include <vector>
@@ -26,12 +28,15 @@ struct PartitionGraph
   std::int64_t numberOfEdges() const { return static_cast<std::int64_t>(neighbours.size()) / 2; }
 };
 
-PartitionGraph buildPartitionGraph(const TetList& tets,
-  const std::vector<int>& partitionOfCell, int numberOfPartitions, PointId numberOfPoints);
+// The graph of the partition of `tets` given by `partitionOfCell`. `parallelFor` scans the tets
+// and sorts the memberships of interface points; the graph does not depend on it.
+Status buildPartitionGraph(const TetList& tets, const std::vector<int>& partitionOfCell,
+  int numberOfPartitions, PointId numberOfPoints, const ParallelFor& parallelFor,
+  PartitionGraph& graph);
 
 // The same for partitions held as meshes: partition p owns the tets of partitions[p].
-PartitionGraph buildPartitionGraph(
-  const std::vector<PartitionMesh>& partitions, PointId numberOfPoints);
+Status buildPartitionGraph(const std::vector<PartitionMesh>& partitions, PointId numberOfPoints,
+  const ParallelFor& parallelFor, PartitionGraph& graph);
 
 // Builds a graph from an explicit undirected edge list (tests and colouring benchmarks).
 PartitionGraph makePartitionGraph(int numberOfPartitions, std::vector<std::pair<int, int>> edges);
