@@ -66,11 +66,11 @@ struct AdaptationSummary
 
 struct AdaptationResult
 {
-  TetMesh mesh;                     // merged, conforming, no unused points
-  std::vector<CellId> parentCell;   // per output tet: the input tet it came from
-  std::vector<int> partitionOfCell; // per output tet
-  std::vector<int> colorOfCell;     // per output tet
-  PointProvenance provenance;       // per output point, over input point ids (if asked for)
+  TetMesh mesh;                        // merged, conforming, no unused points
+  UnfilledVector<CellId> parentCell;   // per output tet: the input tet it came from
+  UnfilledVector<int> partitionOfCell; // per output tet
+  UnfilledVector<int> colorOfCell;     // per output tet
+  PointProvenance provenance;          // per output point, over input point ids (if asked for)
   // Per output tet: 1 when it touches a vertex that lay on an interface between refinement
   // partitions (to compare quality near former interfaces with the interior).
   std::vector<char> nearFormerInterface;

@@ -12,6 +12,7 @@
 #include <new>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace cgmesh
 {
@@ -45,6 +46,10 @@ public:
     ::new (static_cast<void*>(place)) U(std::forward<Arguments>(arguments)...);
   }
 };
+
+// A vector of plain values for arrays of millions that are always written after they are sized.
+template <typename T>
+using UnfilledVector = std::vector<T, DefaultInitAllocator<T>>;
 
 } // namespace cgmesh
 

@@ -16,7 +16,7 @@ using PointId = std::int64_t;
 using CellId = std::int64_t;
 using Tet = std::array<PointId, 4>;
 // Tets are always written after the array is sized: resize() leaves them unwritten.
-using TetList = std::vector<Tet, DefaultInitAllocator<Tet>>;
+using TetList = UnfilledVector<Tet>;
 
 struct TetMesh
 {

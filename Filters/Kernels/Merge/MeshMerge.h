@@ -30,9 +30,9 @@ struct PointProvenance
 struct MergedMesh
 {
   TetMesh mesh;
-  std::vector<CellId> parentCell; // per output tet: the input tet it came from
-  PointProvenance provenance;     // per output point, over input point ids
-  PointId removedPoints = 0;      // points no tet uses (unused input points)
+  UnfilledVector<CellId> parentCell; // per output tet: the input tet it came from
+  PointProvenance provenance;        // per output point, over input point ids
+  PointId removedPoints = 0;         // points no tet uses (unused input points)
 };
 
 // `coordinates` holds all global points; points from `inputPointCount` on were created by
