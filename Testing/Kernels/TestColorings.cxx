@@ -191,9 +191,9 @@ std::vector<std::pair<int, int>> adjacentPairsByDefinition(
   return pairs;
 }
 
-// The partition graph is built from concurrent scans that race to claim points: for any schedule
-// it must be the graph of the definition, from tets with a partition each and from partition
-// meshes. The FinFET's partitions are unstructured and many of its points lie in four or more.
+// The partition graph sorts its memberships on the given runner: for any schedule it must be the
+// graph of the definition, from tets with a partition each and from partition meshes. The FinFET's
+// partitions are unstructured and many of its points lie in four or more.
 void test_partition_graph_is_exact_for_any_schedule()
 {
   TetMesh mesh;

@@ -9,8 +9,8 @@ namespace cgmesh
 namespace
 {
 
-// A run of tets that one task scans: their partition is `partitionOfTet[t]`, or `partition` for
-// all of them when `partitionOfTet` is null.
+// Consecutive tets scanned in turn, so partitions need not be copied into one array: their
+// partition is `partitionOfTet[t]`, or `partition` for all of them when `partitionOfTet` is null.
 struct TetRun
 {
   const Tet* tets = nullptr;
