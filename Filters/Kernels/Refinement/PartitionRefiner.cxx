@@ -177,16 +177,15 @@ Status findInterfaceVertices(const std::vector<PartitionMesh>& partitions, Point
       {
         for (PointId p : tet)
         {
+          // A failed claim leaves the claiming partition in `seen`: another one, as each
+          // partition is a single task.
           int seen = owner[p].load(std::memory_order_relaxed);
           if (seen == mine ||
             (seen == 0 && owner[p].compare_exchange_strong(seen, mine, std::memory_order_relaxed)))
           {
             continue;
           }
-          if (seen != mine)
-          {
-            shared[p].store(1, std::memory_order_relaxed);
-          }
+          shared[p].store(1, std::memory_order_relaxed);
         }
       }
     });

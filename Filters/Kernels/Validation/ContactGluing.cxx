@@ -2,6 +2,7 @@
 
 #include "Core/FaceKey.h"
 #include "Core/Geometry.h"
+#include "Core/LowestRootSets.h"
 
 #include <algorithm>
 #include <array>
@@ -250,42 +251,9 @@ private:
   double SquaredTolerance;
 };
 
-// Union-find whose root is always the lowest id of its set, so the representatives do not depend
-// on the order of the unions.
-class LowestIdSets
-{
-public:
-  explicit LowestIdSets(PointId size)
-    : Parent(size)
-  {
-    for (PointId p = 0; p < size; ++p)
-    {
-      this->Parent[p] = p;
-    }
-  }
-  PointId find(PointId p)
-  {
-    while (this->Parent[p] != p)
-    {
-      this->Parent[p] = this->Parent[this->Parent[p]];
-      p = this->Parent[p];
-    }
-    return p;
-  }
-  void join(PointId a, PointId b)
-  {
-    a = this->find(a);
-    b = this->find(b);
-    this->Parent[std::max(a, b)] = std::min(a, b);
-  }
-
-private:
-  std::vector<PointId> Parent;
-};
-
 // Joins the corners of every pair of matching boundary faces.
 void joinMatchingFaces(
-  const TetMesh& mesh, const Lists& partners, double tolerance, LowestIdSets& sets)
+  const TetMesh& mesh, const Lists& partners, double tolerance, LowestRootSets<PointId>& sets)
 {
   const std::vector<BoundaryFace> faces = contactFaceCandidates(mesh, partners);
   std::vector<std::pair<std::int64_t, std::int64_t>> incidence; // (point, face), sorted
@@ -365,21 +333,21 @@ ContactGluing glueMatchingFaces(TetMesh& mesh)
   std::sort(symmetric.begin(), symmetric.end());
   const Lists partners(static_cast<std::size_t>(mesh.numberOfPoints()), symmetric);
 
-  LowestIdSets sets(mesh.numberOfPoints());
+  LowestRootSets<PointId> sets(mesh.numberOfPoints());
   if (!pairs.empty())
   {
     joinMatchingFaces(mesh, partners, outcome.tolerance, sets);
   }
   for (PointId p : used)
   {
-    outcome.gluedPoints += sets.find(p) != p ? 1 : 0;
+    outcome.gluedPoints += sets.root(p) != p ? 1 : 0;
   }
   // Coincident points that stay distinct: of each such pair of representatives, the higher one
   // (what merging every coincident point would have dropped).
   std::vector<PointId> keptApart;
   for (const auto& [p, q] : pairs)
   {
-    const PointId a = sets.find(p), b = sets.find(q);
+    const PointId a = sets.root(p), b = sets.root(q);
     if (a != b)
     {
       keptApart.push_back(std::max(a, b));
@@ -394,7 +362,7 @@ ContactGluing glueMatchingFaces(TetMesh& mesh)
   {
     for (PointId& p : tet)
     {
-      p = sets.find(p);
+      p = sets.root(p);
     }
   }
   return outcome;
