@@ -108,8 +108,7 @@ TetMesh sliverLadenBlock(int pointCount)
 }
 
 // The share of tets whose smallest dihedral angle is below `degrees`.
-double shareBelow(
-  const TetList& tets, const std::vector<double>& coordinates, double degrees)
+double shareBelow(const TetList& tets, const std::vector<double>& coordinates, double degrees)
 {
   std::size_t below = 0;
   for (const Tet& tet : tets)

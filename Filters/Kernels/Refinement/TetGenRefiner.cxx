@@ -188,8 +188,8 @@ double forecastDelaunayTets(double volume, double maximumVolume)
   return 3.0 * volume / maximumVolume;
 }
 
-double forecastDelaunayTetsForSizes(const TetList& tets,
-  const std::vector<double>& coordinates, const std::vector<double>& sizes)
+double forecastDelaunayTetsForSizes(
+  const TetList& tets, const std::vector<double>& coordinates, const std::vector<double>& sizes)
 {
   double total = 0;
   for (const Tet& tet : tets)

@@ -45,8 +45,8 @@ constexpr double RemeshSliverShare = 0.001;
 double forecastDelaunayTets(double volume, double maximumVolume);
 // The same for a size field (`sizes` per point of `coordinates`): tet by tet, at the mean size of
 // its corners.
-double forecastDelaunayTetsForSizes(const TetList& tets,
-  const std::vector<double>& coordinates, const std::vector<double>& sizes);
+double forecastDelaunayTetsForSizes(
+  const TetList& tets, const std::vector<double>& coordinates, const std::vector<double>& sizes);
 
 // Gives `io` `count` facets of one triangle each, their corners 3 per facet in `corners`: the PLC
 // of a partition meshed anew (switch p).
