@@ -63,6 +63,19 @@ public:
 
   bool contains(const Key& key) const { return this->find(key) != nullptr; }
 
+  // Calls visit(key, value) for every entry, in slot order.
+  template <typename Visit>
+  void forEach(Visit&& visit) const
+  {
+    for (const Slot& slot : this->Slots)
+    {
+      if (!(slot.first == EmptyKey::value()))
+      {
+        visit(slot.first, slot.second);
+      }
+    }
+  }
+
   // Inserts (key, value) unless the key is there; returns whether it inserted.
   bool emplace(const Key& key, const Value& value)
   {

@@ -179,7 +179,7 @@ bool Improver::linkConditionHolds(int a, int b)
 // ImprovementParameters::coarsen); false when none does.
 bool Improver::collapseVertex(int a)
 {
-  if (this->Fixed[a] || this->Incident[a].empty())
+  if (this->Incident[a].empty() || this->isFixed(a))
   {
     return false;
   }

@@ -68,6 +68,7 @@ private:
   double totalVolume(const std::vector<Corners>& tets) const;
   bool swapFace(int t, int skip);
   bool smoothVertex(int v);
+  bool isFixed(int v);
 
   // The size field (EdgeCollapse.cxx), and coarsening.
   double sizeAt(int v) const { return this->Points.sizeAt(this->IdOf[v]); }
@@ -90,7 +91,13 @@ private:
   std::vector<double> Qualities; // mean ratio of each tet, kept current
   std::vector<char> Alive;
   std::vector<std::vector<int>> Incident; // alive tets at each vertex (killTet removes)
-  std::vector<char> Fixed;
+  enum Fixity : char
+  {
+    Unknown,
+    Free,
+    Fixed
+  };
+  std::vector<char> Fixedness; // a Fixity per vertex, found when first asked (isFixed)
   std::vector<char> Moved;
   ImprovementParameters Parameters;
   // Scratch of collapseVertex and linkConditionHolds, kept for their memory.
@@ -98,6 +105,7 @@ private:
   std::vector<int> LinkRing;
   std::vector<std::pair<int, int>> LinkRingEdges, LinkEdgesOfA, LinkEdgesOfB;
   std::vector<unsigned> NeighbourMark; // LinkStamp where a vertex neighbours the collapsed end
+  std::vector<std::array<int, 3>> FacesAtVertex; // scratch of isFixed
   unsigned LinkStamp = 0;
 };
 

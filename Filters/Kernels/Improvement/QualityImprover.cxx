@@ -3,7 +3,6 @@
 #include "Improvement/Improver.h"
 
 #include "Core/EdgeSplits.h"
-#include "Core/FaceKey.h"
 #include "Core/TetQuality.h"
 #include "Refinement/SizeField.h"
 
@@ -95,26 +94,63 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
     this->addTet(
       local[t], partition.regions.empty() ? 0 : partition.regions[t], partition.parentCells[t]);
   }
-  this->Fixed.assign(this->IdOf.size(), 0);
+  this->Fixedness.assign(this->IdOf.size(), Unknown);
   this->Moved.assign(this->IdOf.size(), 0);
   this->NeighbourMark.assign(this->IdOf.size(), 0);
-  // The corners of boundary faces (held by one tet) and material-interface faces stay. Grouped
-  // in local numbers, whose table is half the size of one in global ids.
-  if (this->Tets.empty())
+}
+
+// A vertex stays where it is when a face around it has no second tet (the domain boundary, a
+// partition interface or the cut around the improver's tets) or has tets of two materials on its
+// sides. Every operation changes only faces inside one material and inside the tets, so those
+// faces stay and the answer never changes: it is worked out from the vertex's ball the first time
+// it is asked. Only the vertices of poor tets ever are, a small part of those whose faces a
+// table of every tet's faces would have sorted out up front.
+bool Improver::isFixed(int v)
+{
+  char& known = this->Fixedness[v];
+  if (known != Unknown)
   {
-    return;
+    return known == Fixed;
   }
-  forEachDistinctFace(this->Tets.front().data(), this->Tets.size(),
-    [this](const std::array<int, 3>& face, std::size_t first, std::size_t second, std::size_t count)
+  // Each face at v as the other two corners (sorted) and its tet's region: a face held by one
+  // tet, or by tets of two regions, fixes v.
+  std::vector<std::array<int, 3>>& faces = this->FacesAtVertex;
+  faces.clear();
+  for (int t : this->Incident[v])
+  {
+    const Corners& c = this->Tets[t];
+    for (int skip = 0; skip < 4; ++skip)
     {
-      if (count == 1 || this->Regions[first] != this->Regions[second])
+      if (c[skip] == v)
       {
-        for (int v : face)
+        continue;
+      }
+      int other[2], n = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        if (k != skip && c[k] != v)
         {
-          this->Fixed[v] = 1;
+          other[n++] = c[k];
         }
       }
-    });
+      faces.push_back(
+        { std::min(other[0], other[1]), std::max(other[0], other[1]), this->Regions[t] });
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+  bool fixed = false;
+  for (std::size_t i = 0; i < faces.size() && !fixed;)
+  {
+    std::size_t end = i + 1;
+    while (end < faces.size() && faces[end][0] == faces[i][0] && faces[end][1] == faces[i][1])
+    {
+      ++end;
+    }
+    fixed = end - i == 1 || faces[end - 1][2] != faces[i][2];
+    i = end;
+  }
+  known = fixed ? Fixed : Free;
+  return fixed;
 }
 
 int Improver::localVertex(PointId id)
@@ -512,6 +548,10 @@ bool Improver::smoothVertex(int v)
   {
     return false; // only poor tets are worth a move: most vertices stop here
   }
+  if (this->isFixed(v))
+  {
+    return false;
+  }
   double centre[3] = { 0, 0, 0 };
   int neighbours = 0;
   std::vector<int> seen;
@@ -619,10 +659,7 @@ void Improver::run(const ImprovementParameters& parameters, ImprovementStatistic
     }
     for (int v = 0; v < static_cast<int>(this->IdOf.size()); ++v)
     {
-      if (!this->Fixed[v])
-      {
-        statistics.vertexMoves += this->smoothVertex(v);
-      }
+      statistics.vertexMoves += this->smoothVertex(v);
     }
   }
 }
@@ -716,31 +753,75 @@ PointIdSet verticesOfWork(const PartitionMesh& partition, const PartitionPoints&
   return vertices;
 }
 
-// The tets with a vertex of work: every operation stays inside them (the balls of the vertices
-// of work, the rings of their edges, the face neighbours of poor tets). Template children of
-// good parents are good, so on refined meshes this is a part of the partition, and building the
-// improver's structures for it alone saves most of their cost.
-std::vector<char> neighbourhoodOf(const PartitionMesh& partition, const PointIdSet& vertices)
+// A one-sided filter over a point set: a clear bit proves a point is not in it. Sized at 16 bits
+// per point, it answers most questions about a partition's tets (a few dozen vertices of work
+// among thousands of points) without a probe of the hash set.
+class PointFilter
 {
-  std::vector<char> selected(partition.tets.size(), 0);
+public:
+  explicit PointFilter(const PointIdSet& points)
+  {
+    while ((std::size_t{ 1 } << this->Bits) < 16 * points.size())
+    {
+      ++this->Bits;
+    }
+    this->Words.assign((std::size_t{ 1 } << this->Bits) / 64 + 1, 0);
+    points.forEach(
+      [this](PointId p, char)
+      {
+        const std::uint64_t bit = this->bitOf(p);
+        this->Words[bit / 64] |= std::uint64_t{ 1 } << (bit % 64);
+      });
+  }
+  bool mayContain(PointId p) const
+  {
+    const std::uint64_t bit = this->bitOf(p);
+    return (this->Words[bit / 64] >> (bit % 64)) & 1;
+  }
+
+private:
+  std::uint64_t bitOf(PointId p) const
+  {
+    return (static_cast<std::uint64_t>(p) * 0x9E3779B97F4A7C15ull) >> (64 - this->Bits);
+  }
+  int Bits = 6;
+  std::vector<std::uint64_t> Words;
+};
+
+// Moves the tets with a vertex of work out of `partition` (returned, in their order) and keeps
+// the others in place, in theirs. Every operation stays inside the tets returned (the balls of
+// the vertices of work, the rings of their edges, the face neighbours of poor tets). Template
+// children of good parents are good, so on refined meshes this is a part of the partition, and
+// building the improver's structures for it alone saves most of their cost.
+PartitionMesh extractNeighbourhood(PartitionMesh& partition, const PointIdSet& vertices)
+{
+  const PointFilter filter(vertices);
+  const auto isVertexOfWork = [&](PointId p)
+  {
+    return filter.mayContain(p) && vertices.contains(p);
+  };
+  PartitionMesh chosen;
+  std::size_t kept = 0;
+  const bool hasRegions = !partition.regions.empty();
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
-    selected[t] =
-      std::any_of(tet.begin(), tet.end(), [&vertices](PointId p) { return vertices.contains(p); });
+    if (std::any_of(tet.begin(), tet.end(), isVertexOfWork))
+    {
+      appendTetOf(partition, t, chosen);
+      continue;
+    }
+    partition.tets[kept] = tet; // kept <= t: nothing unread is overwritten
+    partition.parentCells[kept] = partition.parentCells[t];
+    if (hasRegions)
+    {
+      partition.regions[kept] = partition.regions[t];
+    }
+    ++kept;
   }
-  return selected;
-}
-
-// Splits `partition` into the selected tets (returned) and the others (left in `partition`).
-PartitionMesh extractSelected(PartitionMesh& partition, const std::vector<char>& selected)
-{
-  PartitionMesh chosen, rest;
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
-  {
-    appendTetOf(partition, t, selected[t] ? chosen : rest);
-  }
-  partition = std::move(rest);
+  partition.tets.resize(kept);
+  partition.parentCells.resize(kept);
+  partition.regions.resize(hasRegions ? kept : 0);
   return chosen;
 }
 
@@ -779,8 +860,7 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   {
     // The improver freezes the boundary of what it is given, so the neighbourhood's cut through
     // the partition stays as it is, and the tets outside it are untouched.
-    PartitionMesh neighbourhood =
-      improvement::extractSelected(partition, improvement::neighbourhoodOf(partition, vertices));
+    PartitionMesh neighbourhood = improvement::extractNeighbourhood(partition, vertices);
     improvement::Improver improver(neighbourhood, points);
     improver.run(parameters, statistics);
     improver.writeBack(movedPoints);

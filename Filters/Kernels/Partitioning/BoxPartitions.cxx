@@ -165,18 +165,24 @@ void resizeMesh(PartitionMesh& mesh, std::size_t tets, bool withRegions)
 // Keeps, in order and in place, the tets of `partition` that do not move.
 void keepStaying(PartitionMesh& partition, const MovingTets& moving)
 {
+  if (moving.keys.empty())
+  {
+    return; // nothing leaves: no copy, no flags
+  }
   if (moving.keys.size() == partition.tets.size())
   {
     partition = PartitionMesh();
     return;
   }
   std::vector<char> moved(partition.tets.size(), 0);
+  std::size_t firstMoved = partition.tets.size();
   for (std::uint64_t key : moving.keys)
   {
     moved[tetOfKey(key)] = 1;
+    firstMoved = std::min(firstMoved, tetOfKey(key));
   }
-  std::size_t kept = 0;
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  std::size_t kept = firstMoved; // the tets before the first that moves stay where they are
+  for (std::size_t t = firstMoved; t < partition.tets.size(); ++t)
   {
     if (!moved[t])
     {
