@@ -11,6 +11,7 @@
 #include "Improvement/QualityImprover.h"
 
 #include <array>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -105,7 +106,13 @@ private:
   std::vector<int> LinkRing;
   std::vector<std::pair<int, int>> LinkRingEdges, LinkEdgesOfA, LinkEdgesOfB;
   std::vector<unsigned> NeighbourMark; // LinkStamp where a vertex neighbours the collapsed end
-  std::vector<std::array<int, 3>> FacesAtVertex; // scratch of isFixed
+  struct LinkEdge // a face at the vertex isFixed looks at, by its other two corners
+  {
+    std::uint64_t key = 0;
+    int count = 0; // 0: a free slot
+    int region = 0;
+  };
+  std::vector<LinkEdge> LinkEdges; // scratch of isFixed
   unsigned LinkStamp = 0;
 };
 

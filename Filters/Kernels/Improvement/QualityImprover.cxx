@@ -112,14 +112,21 @@ bool Improver::isFixed(int v)
   {
     return known == Fixed;
   }
-  // Each face at v as the other two corners (sorted) and its tet's region: a face held by one
-  // tet, or by tets of two regions, fixes v.
-  std::vector<std::array<int, 3>>& faces = this->FacesAtVertex;
-  faces.clear();
+  // Each face at v is met as the edge (x, y) of its other two corners, with its tet's region, in
+  // a small hash table: v is fixed when an edge is met once, or by tets of two regions.
+  std::size_t capacity = 16;
+  while (capacity < 6 * this->Incident[v].size()) // three faces per tet, at most half full
+  {
+    capacity *= 2;
+  }
+  std::vector<LinkEdge>& table = this->LinkEdges;
+  table.assign(capacity, LinkEdge());
+  const std::size_t mask = capacity - 1;
+  bool fixed = false;
   for (int t : this->Incident[v])
   {
     const Corners& c = this->Tets[t];
-    for (int skip = 0; skip < 4; ++skip)
+    for (int skip = 0; skip < 4 && !fixed; ++skip)
     {
       if (c[skip] == v)
       {
@@ -133,21 +140,28 @@ bool Improver::isFixed(int v)
           other[n++] = c[k];
         }
       }
-      faces.push_back(
-        { std::min(other[0], other[1]), std::max(other[0], other[1]), this->Regions[t] });
+      const std::uint64_t key = (static_cast<std::uint64_t>(std::min(other[0], other[1])) << 32) |
+        static_cast<std::uint32_t>(std::max(other[0], other[1]));
+      for (std::size_t at = (key * 0x9E3779B97F4A7C15ull) >> 40 & mask;; at = (at + 1) & mask)
+      {
+        LinkEdge& slot = table[at];
+        if (slot.count == 0)
+        {
+          slot = { key, 1, this->Regions[t] };
+          break;
+        }
+        if (slot.key == key)
+        {
+          ++slot.count;
+          fixed = slot.region != this->Regions[t];
+          break;
+        }
+      }
     }
   }
-  std::sort(faces.begin(), faces.end());
-  bool fixed = false;
-  for (std::size_t i = 0; i < faces.size() && !fixed;)
+  for (std::size_t at = 0; at < capacity && !fixed; ++at)
   {
-    std::size_t end = i + 1;
-    while (end < faces.size() && faces[end][0] == faces[i][0] && faces[end][1] == faces[i][1])
-    {
-      ++end;
-    }
-    fixed = end - i == 1 || faces[end - 1][2] != faces[i][2];
-    i = end;
+    fixed = table[at].count == 1;
   }
   known = fixed ? Fixed : Free;
   return fixed;
