@@ -103,8 +103,9 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
 // partition interface or the cut around the improver's tets) or has tets of two materials on its
 // sides. Every operation changes only faces inside one material and inside the tets, so those
 // faces stay and the answer never changes: it is worked out from the vertex's ball the first time
-// it is asked. Only the vertices of poor tets ever are, a small part of those whose faces a
-// table of every tet's faces would have sorted out up front.
+// it is asked. Only the vertices of poor tets (and, when coarsening, the ends of short edges)
+// ever are, a small part of those whose faces a table of every tet's faces would have sorted
+// out up front.
 bool Improver::isFixed(int v)
 {
   char& known = this->Fixedness[v];
