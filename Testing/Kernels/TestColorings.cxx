@@ -201,7 +201,8 @@ void test_partition_graph_is_exact_for_any_schedule()
   const int partitions = 64;
   std::vector<int> partitionOfCell;
   CHECK(partitionMesh(mesh, partitions, partitionOfCell).ok());
-  // Tets of one partition spread over many scan ranges: interleave the mesh's order.
+  // Tets of one partition spread through the array, so the scan meets each point's partitions
+  // apart and the sort does the merging: interleave the mesh's order.
   TetList tets(mesh.tets.size());
   std::vector<int> partitionOfTet(mesh.tets.size());
   for (std::size_t t = 0; t < tets.size(); ++t)

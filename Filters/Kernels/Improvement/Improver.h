@@ -1,7 +1,8 @@
 // The mesh-editing core of quality improvement and coarsening (QualityImprover.h): one
 // partition's tets in local vertex numbers, with incidence, qualities and the vertices that may
-// not move. The operations live in QualityImprover.cxx (edge removal, face swaps, smoothing) and
-// EdgeCollapse.cxx (coarsening). Internal to the Improvement kernels.
+// not move, built and written back in Improver.cxx. The operations live in QualityImprover.cxx
+// (edge removal, face swaps, smoothing) and EdgeCollapse.cxx (coarsening). Internal to the
+// Improvement kernels.
 #ifndef cgmesh_Improver_h
 #define cgmesh_Improver_h
 

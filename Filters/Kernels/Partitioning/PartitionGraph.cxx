@@ -143,13 +143,7 @@ Status buildPartitionGraph(const TetList& tets, const std::vector<int>& partitio
   int numberOfPartitions, PointId numberOfPoints, const ParallelFor& parallelFor,
   PartitionGraph& graph)
 {
-  std::vector<TetRun> runs;
-  for (std::size_t begin = 0; begin < tets.size(); begin += IndicesPerCopyRange)
-  {
-    const std::size_t count =
-      std::min(tets.size() - begin, static_cast<std::size_t>(IndicesPerCopyRange));
-    runs.push_back({ tets.data() + begin, count, partitionOfCell.data() + begin, -1 });
-  }
+  const std::vector<TetRun> runs = { { tets.data(), tets.size(), partitionOfCell.data(), -1 } };
   return buildGraphOfRuns(runs, numberOfPartitions, numberOfPoints, parallelFor, graph);
 }
 

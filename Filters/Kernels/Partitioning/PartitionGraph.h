@@ -28,8 +28,9 @@ struct PartitionGraph
   std::int64_t numberOfEdges() const { return static_cast<std::int64_t>(neighbours.size()) / 2; }
 };
 
-// The graph of the partition of `tets` given by `partitionOfCell`. `parallelFor` scans the tets
-// and sorts the memberships of interface points; the graph does not depend on it.
+// The graph of the partition of `tets` given by `partitionOfCell`. The tets are scanned on the
+// calling thread; `parallelFor` sorts the memberships of interface points. The graph does not
+// depend on it.
 Status buildPartitionGraph(const TetList& tets, const std::vector<int>& partitionOfCell,
   int numberOfPartitions, PointId numberOfPoints, const ParallelFor& parallelFor,
   PartitionGraph& graph);

@@ -1,0 +1,287 @@
+// The improver's mesh (Improver.h): local numbering, incidence, qualities, which vertices are
+// frozen, the parent cell of new tets, and writing the result back to the partition. The
+// operations on it are in QualityImprover.cxx and EdgeCollapse.cxx.
+#include "Improvement/Improver.h"
+
+#include "Core/Geometry.h"
+#include "Core/TetQuality.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+namespace cgmesh
+{
+namespace improvement
+{
+
+double Improver::totalVolume(const std::vector<Corners>& tets) const
+{
+  double total = 0;
+  for (const Corners& c : tets)
+  {
+    total += this->orientation(c[0], c[1], c[2], c[3]) / 6.0;
+  }
+  return total;
+}
+
+double Improver::largestVolume(const std::vector<int>& tets) const
+{
+  double largest = 0;
+  for (int t : tets)
+  {
+    const Corners& c = this->Tets[t];
+    largest = std::max(largest, this->orientation(c[0], c[1], c[2], c[3]) / 6.0);
+  }
+  return largest;
+}
+
+bool Improver::withinVolumeBound(const std::vector<Corners>& created, double largestReplaced) const
+{
+  if (!(this->Parameters.maximumVolume > 0))
+  {
+    return true;
+  }
+  const double allowed = std::max(this->Parameters.maximumVolume, largestReplaced);
+  for (const Corners& c : created)
+  {
+    if (this->orientation(c[0], c[1], c[2], c[3]) / 6.0 > allowed)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
+  : Partition(partition)
+  , Points(points)
+{
+  // Local numbers first, so that each vertex's incidence list is allocated once at its size
+  // (with room for what the operations add): growing them one tet at a time was a fifth of
+  // building the improver.
+  const std::size_t tetCount = partition.tets.size();
+  std::vector<Corners> local(tetCount);
+  this->LocalOf.reserve(tetCount / 4 + 16);
+  for (std::size_t t = 0; t < tetCount; ++t)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      local[t][k] = this->localVertex(partition.tets[t][k]);
+    }
+  }
+  std::vector<int> tetsAt(this->IdOf.size(), 0);
+  for (const Corners& corners : local)
+  {
+    for (int v : corners)
+    {
+      ++tetsAt[v];
+    }
+  }
+  for (std::size_t v = 0; v < tetsAt.size(); ++v)
+  {
+    this->Incident[v].reserve(tetsAt[v] + 8);
+  }
+  this->Tets.reserve(tetCount);
+  this->Regions.reserve(tetCount);
+  this->Parents.reserve(tetCount);
+  this->Qualities.reserve(tetCount);
+  this->Alive.reserve(tetCount);
+  for (std::size_t t = 0; t < tetCount; ++t)
+  {
+    this->addTet(
+      local[t], partition.regions.empty() ? 0 : partition.regions[t], partition.parentCells[t]);
+  }
+  this->Fixedness.assign(this->IdOf.size(), Unknown);
+  this->Moved.assign(this->IdOf.size(), 0);
+  this->NeighbourMark.assign(this->IdOf.size(), 0);
+}
+
+// A vertex stays where it is when a face around it has no second tet (the domain boundary, a
+// partition interface or the cut around the improver's tets) or has tets of two materials on its
+// sides. Every operation changes only faces inside one material and inside the tets, so those
+// faces stay and the answer never changes: it is worked out from the vertex's ball the first time
+// it is asked. Only the vertices of poor tets (and, when coarsening, the ends of short edges)
+// ever are, a small part of those whose faces a table of every tet's faces would have sorted
+// out up front.
+bool Improver::isFixed(int v)
+{
+  char& known = this->Fixedness[v];
+  if (known != Unknown)
+  {
+    return known == Fixed;
+  }
+  // Each face at v is met as the edge (x, y) of its other two corners, with its tet's region, in
+  // a small hash table: v is fixed when an edge is met once, or by tets of two regions.
+  std::size_t capacity = 16;
+  while (capacity < 6 * this->Incident[v].size()) // three faces per tet, at most half full
+  {
+    capacity *= 2;
+  }
+  std::vector<LinkEdge>& table = this->LinkEdges;
+  table.assign(capacity, LinkEdge());
+  const std::size_t mask = capacity - 1;
+  bool fixed = false;
+  for (int t : this->Incident[v])
+  {
+    const Corners& c = this->Tets[t];
+    for (int skip = 0; skip < 4 && !fixed; ++skip)
+    {
+      if (c[skip] == v)
+      {
+        continue;
+      }
+      int other[2], n = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        if (k != skip && c[k] != v)
+        {
+          other[n++] = c[k];
+        }
+      }
+      const std::uint64_t key = (static_cast<std::uint64_t>(std::min(other[0], other[1])) << 32) |
+        static_cast<std::uint32_t>(std::max(other[0], other[1]));
+      for (std::size_t at = (key * 0x9E3779B97F4A7C15ull) >> 40 & mask;; at = (at + 1) & mask)
+      {
+        LinkEdge& slot = table[at];
+        if (slot.count == 0)
+        {
+          slot = { key, 1, this->Regions[t] };
+          break;
+        }
+        if (slot.key == key)
+        {
+          ++slot.count;
+          fixed = slot.region != this->Regions[t];
+          break;
+        }
+      }
+    }
+  }
+  for (std::size_t at = 0; at < capacity && !fixed; ++at)
+  {
+    fixed = table[at].count == 1;
+  }
+  known = fixed ? Fixed : Free;
+  return fixed;
+}
+
+int Improver::localVertex(PointId id)
+{
+  const int next = static_cast<int>(this->IdOf.size());
+  if (!this->LocalOf.emplace(id, next))
+  {
+    return *this->LocalOf.find(id);
+  }
+  this->IdOf.push_back(id);
+  this->Incident.emplace_back();
+  return next;
+}
+
+void Improver::addTet(const Corners& corners, int region, CellId parent)
+{
+  const int t = static_cast<int>(this->Tets.size());
+  this->Tets.push_back(corners);
+  this->Regions.push_back(region);
+  this->Parents.push_back(parent);
+  this->Qualities.push_back(this->quality(corners));
+  this->Alive.push_back(1);
+  for (int v : corners)
+  {
+    this->Incident[v].push_back(t);
+  }
+}
+
+void Improver::killTet(int t)
+{
+  this->Alive[t] = 0;
+  for (int v : this->Tets[t])
+  {
+    auto& list = this->Incident[v];
+    list.erase(std::remove(list.begin(), list.end(), t), list.end());
+  }
+}
+
+std::vector<int> Improver::aliveTetsWith(const std::vector<int>& vertices) const
+{
+  std::vector<int> found;
+  for (int t : this->Incident[vertices[0]])
+  {
+    const Corners& c = this->Tets[t];
+    bool all = true;
+    for (std::size_t i = 1; i < vertices.size() && all; ++i)
+    {
+      all = std::find(c.begin(), c.end(), vertices[i]) != c.end();
+    }
+    if (all && this->Alive[t])
+    {
+      found.push_back(t);
+    }
+  }
+  return found;
+}
+
+// The replaced tet that contains the new tet's centroid: its input cell is the new tet's parent.
+CellId Improver::parentOf(const Corners& corners, const std::vector<int>& replaced) const
+{
+  double centroid[3] = { 0, 0, 0 };
+  for (int v : corners)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      centroid[axis] += 0.25 * this->at(v)[axis];
+    }
+  }
+  int best = replaced.front();
+  double bestMinimum = -std::numeric_limits<double>::max();
+  for (int t : replaced)
+  {
+    const Corners& c = this->Tets[t];
+    const double volume = this->orientation(c[0], c[1], c[2], c[3]);
+    double minimum = std::numeric_limits<double>::max();
+    for (int i = 0; i < 4; ++i)
+    {
+      const double* p[4] = { this->at(c[0]), this->at(c[1]), this->at(c[2]), this->at(c[3]) };
+      p[i] = centroid;
+      minimum = std::min(minimum, signedVolume6(p[0], p[1], p[2], p[3]) / volume);
+    }
+    if (minimum > bestMinimum)
+    {
+      bestMinimum = minimum;
+      best = t;
+    }
+  }
+  return this->Parents[best];
+}
+
+void Improver::writeBack(std::vector<PointId>& movedPoints)
+{
+  PartitionMesh improved;
+  const bool hasRegions = !this->Partition.regions.empty();
+  for (std::size_t t = 0; t < this->Tets.size(); ++t)
+  {
+    if (!this->Alive[t])
+    {
+      continue;
+    }
+    const Corners& c = this->Tets[t];
+    improved.tets.push_back(
+      { this->IdOf[c[0]], this->IdOf[c[1]], this->IdOf[c[2]], this->IdOf[c[3]] });
+    improved.parentCells.push_back(this->Parents[t]);
+    if (hasRegions)
+    {
+      improved.regions.push_back(this->Regions[t]);
+    }
+  }
+  this->Partition = std::move(improved);
+  for (std::size_t v = 0; v < this->IdOf.size(); ++v)
+  {
+    if (this->Moved[v])
+    {
+      movedPoints.push_back(this->IdOf[v]);
+    }
+  }
+}
+
+} // namespace improvement
+} // namespace cgmesh
