@@ -263,6 +263,9 @@ void collectFilterStatistics(
   statistics.sweepRemeshedBoxes = summary.sweepRemeshedBoxes;
   statistics.sweepDroppedPoints = summary.sweepDroppedPoints;
   statistics.sweepRemeshFailures = summary.sweepRemeshFailures;
+  statistics.inputRemeshedBoxes = summary.inputRemeshedBoxes;
+  statistics.inputDroppedPoints = summary.inputDroppedPoints;
+  statistics.inputRemeshFailures = summary.inputRemeshFailures;
   statistics.partitionsPerColor = summary.partitionsPerColor;
   statistics.cellsPerColor = summary.cellsPerColor;
   statistics.colorBalance = summary.colorBalance;
@@ -339,6 +342,9 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
            << std::setw(24) << "tetgen retries" << statistics.tetgenRetries << "\n"
            << std::setw(24) << "tetgen without q" << statistics.tetgenWithoutQualityBound << "\n"
            << std::setw(24) << "tetgen remeshed" << statistics.tetgenRemeshed << "\n"
+           << std::setw(24) << "input remeshed boxes" << statistics.inputRemeshedBoxes << " ("
+           << statistics.inputDroppedPoints << " points dropped, " << statistics.inputRemeshFailures
+           << " failed)\n"
            << std::setw(24) << "sweep remeshed boxes" << statistics.sweepRemeshedBoxes << " ("
            << statistics.sweepDroppedPoints << " points dropped, " << statistics.sweepRemeshFailures
            << " failed)\n"
@@ -411,6 +417,9 @@ Status writeStatisticsJson(const RefineStatistics& statistics, const std::string
        << "  \"sweepRemeshedBoxes\": " << statistics.sweepRemeshedBoxes << ",\n"
        << "  \"sweepDroppedPoints\": " << statistics.sweepDroppedPoints << ",\n"
        << "  \"sweepRemeshFailures\": " << statistics.sweepRemeshFailures << ",\n"
+       << "  \"inputRemeshedBoxes\": " << statistics.inputRemeshedBoxes << ",\n"
+       << "  \"inputDroppedPoints\": " << statistics.inputDroppedPoints << ",\n"
+       << "  \"inputRemeshFailures\": " << statistics.inputRemeshFailures << ",\n"
        << "  \"delaunayFallbacks\": " << statistics.delaunayFallbacks << ",\n"
        << "  \"fallbackPartitions\": [" << joinValues(statistics.fallbackPartitions, ", ") << "],\n"
        << "  \"compression\": " << jsonString(statistics.compression) << ",\n";

@@ -60,6 +60,9 @@ struct RefineStatistics
   std::int64_t sweepRemeshedBoxes = 0;          // Delaunay sweep: boxes meshed anew,
   std::int64_t sweepDroppedPoints = 0;          // the interior points they dropped,
   std::int64_t sweepRemeshFailures = 0;         // and boxes TetGen failed on
+  std::int64_t inputRemeshedBoxes = 0;          // sliver-laden input: clusters meshed anew first,
+  std::int64_t inputDroppedPoints = 0;          // the interface-round points they dropped,
+  std::int64_t inputRemeshFailures = 0;         // and clusters TetGen failed on
   bool partitionByRegion = false;
   int partitionsPerRegion = 1;
   std::string coloring;

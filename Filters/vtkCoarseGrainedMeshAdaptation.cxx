@@ -137,6 +137,9 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "SweepRemeshedBoxes", static_cast<double>(result.sweepRemeshedBoxes));
   addFieldValue(fieldData, "SweepDroppedPoints", static_cast<double>(result.sweepDroppedPoints));
   addFieldValue(fieldData, "SweepRemeshFailures", static_cast<double>(result.sweepRemeshFailures));
+  addFieldValue(fieldData, "InputRemeshedBoxes", static_cast<double>(result.inputRemeshedBoxes));
+  addFieldValue(fieldData, "InputDroppedPoints", static_cast<double>(result.inputDroppedPoints));
+  addFieldValue(fieldData, "InputRemeshFailures", static_cast<double>(result.inputRemeshFailures));
   addFieldValue(fieldData, "ColoringAlgorithmIndex", filter->GetColoringAlgorithm());
   // The partitioner used: Automatic resolved to METIS or Hilbert.
   addFieldValue(fieldData, "PartitionerIndex", static_cast<int>(result.plan.partitioner));

@@ -253,10 +253,11 @@ Status adoptMergedMesh(
       summary.cellsPerColor[color] += cellsPerColor[color];
     }
   }
-  // Each collapse leaves exactly one vertex unused, and so does each point the Delaunay sweep
-  // dropped: those are the run's own, not the input's fault.
-  const PointId unused =
-    merged.removedPoints - static_cast<PointId>(summary.edgeCollapses + summary.sweepDroppedPoints);
+  // Each collapse leaves exactly one vertex unused, and so does each point the Delaunay sweep, or
+  // meshing a sliver-laden input anew, dropped: those are the run's own, not the input's fault.
+  const PointId unused = merged.removedPoints -
+    static_cast<PointId>(
+      summary.edgeCollapses + summary.sweepDroppedPoints + summary.inputDroppedPoints);
   if (unused > 0)
   {
     summary.warnings.push_back({ WarningKind::UnusedPointsRemoved, -1,
@@ -346,6 +347,14 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   if (improvesInputFirst(options, summary.plan))
   {
     status = improveInputFirst(options, partitionOfCell, graph, setup, state, summary, reporter);
+    if (!status.ok() || summary.aborted)
+    {
+      return status;
+    }
+  }
+  if (remeshesInputFirst(options))
+  {
+    status = remeshInputFirst(options, partitionOfCell, graph, setup, state, summary, reporter);
     if (!status.ok() || summary.aborted)
     {
       return status;

@@ -45,6 +45,11 @@ struct AdaptationSummary
   std::int64_t sweepRemeshedBoxes = 0;
   std::int64_t sweepDroppedPoints = 0;
   std::int64_t sweepRemeshFailures = 0;
+  // Delaunay with ImproveInput on a sliver-laden input: the clusters of slivers meshed anew
+  // before refinement, and those where TetGen failed, left as they were (InputImprovement.h).
+  std::int64_t inputRemeshedBoxes = 0;
+  std::int64_t inputDroppedPoints = 0; // interface-round points inside the clusters, dropped
+  std::int64_t inputRemeshFailures = 0;
   bool concurrentTetGen = false;    // TetGen calls overlapped (in worker processes)
   std::int64_t reorientedTets = 0;  // inverted input tets that were turned around
   std::int64_t gluedPoints = 0;     // copies of matching faces' corners merged into one point

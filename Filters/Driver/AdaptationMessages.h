@@ -17,7 +17,8 @@ enum class WarningKind
   CoincidentPointsKeptApart, // coincident points not on matching faces were left distinct
   UnusedPointsRemoved,       // points no tet uses were left out of the output
   DelaunayFallback,          // TetGen failed on a partition, refined by templates instead
-  SweepRemeshFailed          // TetGen failed on a box of the Delaunay sweep, left as refined
+  SweepRemeshFailed,         // TetGen failed on a box of the Delaunay sweep, left as refined
+  InputRemeshFailed          // TetGen failed on a cluster of the input's slivers, left as it was
 };
 
 // The kind's name in reports ("delaunay-fallback").
@@ -39,6 +40,8 @@ inline const char* warningKindName(WarningKind kind)
       return "delaunay-fallback";
     case WarningKind::SweepRemeshFailed:
       return "sweep-remesh-failed";
+    case WarningKind::InputRemeshFailed:
+      return "input-remesh-failed";
   }
   return "unknown";
 }

@@ -61,7 +61,7 @@ struct AdaptationOptions
   double volumeFactor{};
   double radiusEdgeRatio{};
   bool improveQuality{};
-  bool improveInput{}; // template: improve the input before refining it (InputImprovement.h)
+  bool improveInput{}; // improve (Delaunay: a sliver-laden one meshed anew) before refining
   int improvementPasses{};
   int numberOfThreads{};
   std::int64_t maximumNumberOfCells{};
@@ -186,11 +186,14 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "improve the tets after refinement (edge removal, face swaps, guarded smoothing), then "
       "again over box partitions across the former interfaces; --no-improve skips it",
       &O::improveQuality },
-    { "ImproveInput", "--no-improve-input", "", K::Boolean, 0, 1, 1, "", S::Template,
+    { "ImproveInput", "--no-improve-input", "", K::Boolean, 0, 1, 1, "", S::Any,
       "with ImproveQuality, also improve the input's tets before refining them, as the refined "
-      "ones are; children keep their parent's shape, so this does the work on an eighth of the "
-      "tets per pass. Not with RefinementRegions or RefinementBox, which leave the other tets as "
-      "they are; --no-improve-input improves only after refinement",
+      "ones are. Template: children keep their parent's shape, so this does the work on an "
+      "eighth of the tets per pass (not with RefinementRegions or RefinementBox, which leave the "
+      "other tets as they are). Delaunay: an input with more than 0.1% of its tets under 1 "
+      "degree is first meshed anew around its slivers by TetGen (its boundary and interface "
+      "edges split as refinement splits them), then improved; --no-improve-input refines the "
+      "input as given",
       &O::improveInput },
     { "NumberOfImprovementPasses", "--improve-passes", "N", K::Integer, 0, 20, 2, "", S::Any,
       "passes of edge removal, face swaps and smoothing per partition in each sweep",

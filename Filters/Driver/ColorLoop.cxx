@@ -98,6 +98,25 @@ void recordSweepReports(const std::vector<int>& members, const std::vector<TaskR
   }
 }
 
+// The clusters of the input's slivers meshed anew before refinement, and those TetGen failed on.
+void recordInputRemeshReports(const std::vector<TaskReport>& reports, AdaptationSummary& summary)
+{
+  for (const TaskReport& report : reports)
+  {
+    const DelaunayOutcome& outcome = report.delaunay;
+    summary.tetgenPoints += outcome.tetgenPoints;
+    summary.inputRemeshedBoxes += outcome.remeshed ? 1 : 0;
+    summary.inputDroppedPoints += outcome.droppedPoints;
+    if (outcome.fellBack)
+    {
+      ++summary.inputRemeshFailures;
+      summary.warnings.push_back({ WarningKind::InputRemeshFailed, -1,
+        "a cluster of slivers in the input could not be meshed anew (" + outcome.reason +
+          "); its tets are refined as they were" });
+    }
+  }
+}
+
 void recordReports(const std::vector<int>& members, const std::vector<TaskReport>& reports,
   int iteration, AdaptationSummary& summary)
 {
@@ -217,11 +236,16 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
       reports[i] = refineOnePartition(iteration, state, members[i], received[i]);
       received[i] = EdgeMidpointMap();
     });
-  if (setup.remeshSweep)
+  const bool beforeRefinement = setup.stage == Stage::ImproveInput;
+  if (setup.remeshSweep && beforeRefinement)
+  {
+    recordInputRemeshReports(reports, summary);
+  }
+  else if (setup.remeshSweep)
   {
     recordSweepReports(members, reports, summary);
   }
-  else
+  else if (!beforeRefinement) // the interface rounds before meshing the input anew report nothing
   {
     recordReports(members, reports, iterationIndex, summary);
   }
@@ -427,7 +451,10 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
   const int steps = setup.numberOfIterations * setup.numberOfColors;
   std::size_t pointsAtLastPass = 0;
   std::vector<char> awaitingImprovement(state.partitions.size(), 1); // none improved yet
-  const bool refinesPartitions = setup.refine && !setup.remeshSweep; // its figures per partition
+  // Its figures per partition, but not those of the interface rounds before the input's slivers
+  // are meshed anew.
+  const bool refinesPartitions =
+    setup.refine && !setup.remeshSweep && setup.stage != Stage::ImproveInput;
   if (refinesPartitions)
   {
     summary.partitionTaskSeconds.assign(

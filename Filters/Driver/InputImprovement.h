@@ -24,6 +24,33 @@ Status improveInputFirst(const AdaptationOptions& options, const std::vector<int
   PartitionGraph& graph, ColorLoopSetup& setup, AdaptationState& state, AdaptationSummary& summary,
   PhaseReporter& reporter);
 
+// Whether the run meshes a sliver-laden input anew first: Delaunay with ImproveInput and
+// ImproveQuality.
+bool remeshesInputFirst(const AdaptationOptions& options);
+
+// When the input's tets under RemeshSliverDegrees are more than RemeshSliverShare of all:
+// the interface rounds of Delaunay refinement (boundary, material-interface and partition-
+// interface edges split down to the interface length), then the clusters around the slivers
+// meshed anew by TetGen with the radius-edge bound alone (remeshSliverClusters), every tet back
+// to its input cell's partition with `graph` and the colouring rebuilt, and the tets improved as
+// by improveInputFirst. Refinement then cuts its partitions through TetGen's tets instead of
+// slivers.
+Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>& partitionOfCell,
+  PartitionGraph& graph, ColorLoopSetup& setup, AdaptationState& state, AdaptationSummary& summary,
+  PhaseReporter& reporter);
+
+// improveInputFirst, its progress going from `progressStart` to `progressEnd` of its stage.
+Status improveInputBetween(double progressStart, double progressEnd,
+  const AdaptationOptions& options, const std::vector<int>& partitionOfCell, PartitionGraph& graph,
+  ColorLoopSetup& setup, AdaptationState& state, AdaptationSummary& summary,
+  PhaseReporter& reporter);
+
+// Every tet to the partition of its input cell (`partitionOfCell`), then `graph` and the
+// colouring (summary and `setup`) rebuilt for them; reports `progress` of the ImproveInput stage.
+Status returnToInputPartitions(const AdaptationOptions& options,
+  const std::vector<int>& partitionOfCell, PartitionGraph& graph, ColorLoopSetup& setup,
+  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter, double progress);
+
 } // namespace cgmesh
 
 #endif

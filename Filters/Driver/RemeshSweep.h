@@ -28,6 +28,18 @@ Status remeshAcrossFormerInterfaces(const ColorLoopSetup& setup, const Adaptatio
   int boxesPerAxis, const std::vector<char>& formerInterface, AdaptationState& state,
   AdaptationSummary& summary, PhaseReporter& reporter);
 
+// Sets `many` when the tets under RemeshSliverDegrees are more than RemeshSliverShare of all tets
+// (a scan of every tet, on `threads` threads).
+Status countSlivers(int threads, const AdaptationState& state, bool& many);
+
+// Meshes the clusters around every sliver anew as the sweep does (not only at former
+// interfaces), with the radius-edge bound alone (DelaunayParameters::shapesOnly), when the tets
+// under RemeshSliverDegrees are more than RemeshSliverShare of all tets; `remeshed` says whether
+// it did. For a sliver-laden input before it is refined (InputImprovement.h).
+Status remeshSliverClusters(const ColorLoopSetup& setup, const AdaptationOptions& options,
+  int boxesPerAxis, AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter,
+  bool& remeshed);
+
 } // namespace cgmesh
 
 #endif

@@ -608,6 +608,7 @@ void test_sliver_laden_mesh_conforms_across_threads()
   AdaptationOptions options = delaunayOptions(1, 1);
   options.numberOfPartitions = 8;
   options.volumeFactor = 0.5;
+  options.improveInput = false; // refined as given (see the next test)
   const AdaptationResult serial = run(input, options);
   cgmesh_test::checkValidAndConserving(input, serial.mesh);
   CHECK(serial.summary.tetgenRemeshed > 0);
@@ -635,6 +636,44 @@ void test_sliver_laden_mesh_conforms_across_threads()
             << serial.summary.sweepRemeshedBoxes << " boxes, " << serial.summary.sweepDroppedPoints
             << " points dropped), " << sliversWithout << " without\n";
   CHECK(sliversAfterSweep < 0.25 * sliversWithout);
+}
+
+// With ImproveInput, a sliver-laden input is meshed anew before it is refined: its interface
+// rounds first, then TetGen on the clusters of its slivers with the radius-edge bound alone, then
+// improvement. Refinement's partitions then hold TetGen's tets, not the input's slivers: fewer of
+// them are meshed anew, and the output is conforming, conserving and the same for any thread
+// count, with no point left over but those the clusters dropped.
+void test_sliver_laden_input_is_meshed_anew_first()
+{
+  const TetMesh input = sliverLadenBlock(1500);
+  AdaptationOptions options = delaunayOptions(1, 1);
+  options.numberOfPartitions = 8;
+  options.volumeFactor = 0.5;
+  options.improveQuality = true;
+  options.improveInput = false;
+  const AdaptationResult refinedAsGiven = run(input, options);
+  options.improveInput = true;
+  const AdaptationResult serial = run(input, options);
+  cgmesh_test::checkValidAndConserving(input, serial.mesh);
+  CHECK(serial.summary.inputRemeshedBoxes > 0 && serial.summary.inputDroppedPoints > 0);
+  CHECK_EQUAL(serial.summary.inputRemeshFailures, std::int64_t(0));
+  CHECK_EQUAL(serial.summary.delaunayFallbacks, std::int64_t(0));
+  CHECK(std::none_of(serial.summary.warnings.begin(), serial.summary.warnings.end(),
+    [](const AdaptationWarning& warning)
+    { return warning.kind == WarningKind::UnusedPointsRemoved; }));
+  CHECK(serial.summary.tetgenRemeshed < refinedAsGiven.summary.tetgenRemeshed);
+  CHECK_EQUAL(refinedAsGiven.summary.inputRemeshedBoxes, std::int64_t(0));
+  const double under = shareBelow(serial.mesh.tets, serial.mesh.coordinates, 1.0);
+  const double underAsGiven =
+    shareBelow(refinedAsGiven.mesh.tets, refinedAsGiven.mesh.coordinates, 1.0);
+  std::cout << "sliver-laden block meshed anew first: " << serial.summary.inputRemeshedBoxes
+            << " clusters (" << serial.summary.inputDroppedPoints << " points dropped), "
+            << serial.summary.tetgenRemeshed << " partitions meshed anew in refinement (against "
+            << refinedAsGiven.summary.tetgenRemeshed << "), share of output tets under 1 degree "
+            << under << " (against " << underAsGiven << ")\n";
+  CHECK(under <= underAsGiven);
+  options.numberOfThreads = 2;
+  CHECK(cgmesh_test::identicalResults(serial, run(input, options)));
 }
 
 // The sweep's kernel: a partition meshed anew from its kept faces drops exactly its interior
@@ -768,6 +807,7 @@ int main()
   test_tampered_tetgen_output_is_refused();
   test_sliver_laden_partition_is_meshed_anew_around_a_cavity();
   test_sliver_laden_mesh_conforms_across_threads();
+  test_sliver_laden_input_is_meshed_anew_first();
   test_sweep_box_drops_only_interior_points_refinement_made();
   return cgmesh_test::finish("TestDelaunay");
 }

@@ -40,7 +40,7 @@ std::string tetgenSwitches(
     // TetGen refines only with q; a radius-edge bound no tet reaches leaves the shapes alone.
     switches += "q1000";
   }
-  if (parameters.maximumVolume > 0)
+  if (parameters.maximumVolume > 0 && !parameters.shapesOnly)
   {
     std::snprintf(bound, sizeof(bound), "a%.17g", parameters.maximumVolume);
     switches += bound;
@@ -98,8 +98,9 @@ std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMes
     tetgenio in, out;
     session.prepareInput(in, keptFaces, attempt.order, attempt.input, firstDroppablePoint);
     const bool remesh = attempt.input != TetGenInput::Tets;
-    failure = runTetGen(
-      in, tetgenSwitches(parameters, attempt.qualityBound, context.sizes != nullptr, remesh), out);
+    const bool sizeField = context.sizes != nullptr && !parameters.shapesOnly;
+    failure =
+      runTetGen(in, tetgenSwitches(parameters, attempt.qualityBound, sizeField, remesh), out);
     if (failure.empty())
     {
       failure = session.validate(in, out);
@@ -244,7 +245,7 @@ Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext
   std::vector<Face> boundaryFaces, regionInterfaceFaces;
   Status status = splitConstrainedEdges(
     partition, context, received, refinement, boundaryFaces, regionInterfaceFaces);
-  if (!status.ok())
+  if (!status.ok() || parameters.constrainedEdgesOnly)
   {
     return status;
   }

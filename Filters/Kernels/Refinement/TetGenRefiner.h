@@ -24,6 +24,11 @@ struct DelaunayParameters
   double maximumVolume = 0;     // TetGen's volume bound (switch a)
   double radiusEdgeRatio = 2;   // TetGen's radius-edge quality bound (switch q)
   bool simulateFailure = false; // behave as if TetGen had failed (tests of the fallback)
+  // Before a sliver-laden input is meshed anew (Driver/InputImprovement.h): only the interface
+  // rounds, no TetGen call; then TetGen with the radius-edge bound alone, neither the volume
+  // bound nor the sizes.
+  bool constrainedEdgesOnly = false;
+  bool shapesOnly = false;
 };
 
 // The edge length up to which templates refine interfaces for a volume bound: the edge of the
