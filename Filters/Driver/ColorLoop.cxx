@@ -77,42 +77,39 @@ TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& stat
   return report;
 }
 
-// The sweep's boxes: how many were meshed anew, the points they dropped, and why the others
-// failed (they stay as refinement left them).
-void recordSweepReports(const std::vector<int>& members, const std::vector<TaskReport>& reports,
-  AdaptationSummary& summary)
+// Boxes meshed anew, by the sweep across former interfaces or, before refinement, around the
+// input's slivers: how many, the points they dropped, and why the others failed (they stay as
+// they were).
+void recordRemeshReports(
+  const std::vector<TaskReport>& reports, bool beforeRefinement, AdaptationSummary& summary)
 {
-  for (std::size_t i = 0; i < members.size(); ++i)
-  {
-    const DelaunayOutcome& outcome = reports[i].delaunay;
-    summary.tetgenPoints += outcome.tetgenPoints;
-    summary.sweepRemeshedBoxes += outcome.remeshed ? 1 : 0;
-    summary.sweepDroppedPoints += outcome.droppedPoints;
-    if (outcome.fellBack)
-    {
-      ++summary.sweepRemeshFailures;
-      summary.warnings.push_back({ WarningKind::SweepRemeshFailed, -1,
-        "a box across former interfaces could not be meshed anew (" + outcome.reason +
-          "); its tets stay as refined" });
-    }
-  }
-}
-
-// The clusters of the input's slivers meshed anew before refinement, and those TetGen failed on.
-void recordInputRemeshReports(const std::vector<TaskReport>& reports, AdaptationSummary& summary)
-{
+  std::int64_t& boxes = beforeRefinement ? summary.inputRemeshedBoxes : summary.sweepRemeshedBoxes;
+  std::int64_t& dropped =
+    beforeRefinement ? summary.inputDroppedPoints : summary.sweepDroppedPoints;
+  std::int64_t& failures =
+    beforeRefinement ? summary.inputRemeshFailures : summary.sweepRemeshFailures;
   for (const TaskReport& report : reports)
   {
     const DelaunayOutcome& outcome = report.delaunay;
     summary.tetgenPoints += outcome.tetgenPoints;
-    summary.inputRemeshedBoxes += outcome.remeshed ? 1 : 0;
-    summary.inputDroppedPoints += outcome.droppedPoints;
-    if (outcome.fellBack)
+    boxes += outcome.remeshed ? 1 : 0;
+    dropped += outcome.droppedPoints;
+    if (!outcome.fellBack)
     {
-      ++summary.inputRemeshFailures;
+      continue;
+    }
+    ++failures;
+    if (beforeRefinement)
+    {
       summary.warnings.push_back({ WarningKind::InputRemeshFailed, -1,
         "a cluster of slivers in the input could not be meshed anew (" + outcome.reason +
           "); its tets are refined as they were" });
+    }
+    else
+    {
+      summary.warnings.push_back({ WarningKind::SweepRemeshFailed, -1,
+        "a box across former interfaces could not be meshed anew (" + outcome.reason +
+          "); its tets stay as refined" });
     }
   }
 }
@@ -237,13 +234,9 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
       received[i] = EdgeMidpointMap();
     });
   const bool beforeRefinement = setup.stage == Stage::ImproveInput;
-  if (setup.remeshSweep && beforeRefinement)
+  if (setup.remeshSweep)
   {
-    recordInputRemeshReports(reports, summary);
-  }
-  else if (setup.remeshSweep)
-  {
-    recordSweepReports(members, reports, summary);
+    recordRemeshReports(reports, beforeRefinement, summary);
   }
   else if (!beforeRefinement) // the interface rounds before meshing the input anew report nothing
   {
