@@ -1,7 +1,9 @@
-// Quality improvement of the input before template refinement. A template child has its parent's
-// shape or one close to it, so a poor input tet becomes eight poor tets per pass: improving the
-// input works on a fraction of the tets that improving the refined mesh does, and leaves that
-// step little to do.
+// The input's tets made better before they are refined. Template: a child has its parent's shape
+// or one close to it, so a poor input tet becomes eight poor tets per pass: improving the input
+// works on a fraction of the tets that improving the refined mesh does, and leaves that step
+// little to do. Delaunay: TetGen keeps every partition's boundary, and where those faces are a
+// sliver-laden input's, it refines slowly and leaves slivers; such an input is meshed anew around
+// its slivers first, then improved.
 #ifndef cgmesh_InputImprovement_h
 #define cgmesh_InputImprovement_h
 

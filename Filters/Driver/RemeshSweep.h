@@ -5,7 +5,8 @@
 // clusters of tets that share a corner, puts each cluster whole into one box (a box face through
 // a cluster would be a poor face to keep, on which TetGen fails), and lets TetGen mesh each box
 // anew without the interior points refinement made (remeshPartitionDelaunay), boxes of one
-// colour at once.
+// colour at once. The same machinery meshes a sliver-laden input's clusters anew before it is
+// refined (remeshSliverClusters).
 #ifndef cgmesh_RemeshSweep_h
 #define cgmesh_RemeshSweep_h
 
