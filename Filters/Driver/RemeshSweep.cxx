@@ -46,7 +46,7 @@ Status flagAroundSlivers(int threads, const std::vector<char>* formerInterface,
   {
     tets += partition.tets.size();
   }
-  found = static_cast<double>(severe.load()) > RemeshSliverShare * static_cast<double>(tets);
+  found = exceedsSliverShare(severe.load(), tets);
   if (!found)
   {
     flagged.clear();
@@ -147,13 +147,14 @@ Status countSlivers(int threads, const AdaptationState& state, bool& many)
         slivers[p] += angle < RemeshSliverDegrees ? 1 : 0;
       }
     });
-  std::int64_t total = 0, tets = 0;
+  std::int64_t total = 0;
+  std::size_t tets = 0;
   for (std::size_t p = 0; p < slivers.size(); ++p)
   {
     total += slivers[p];
-    tets += static_cast<std::int64_t>(state.partitions[p].tets.size());
+    tets += state.partitions[p].tets.size();
   }
-  many = static_cast<double>(total) > RemeshSliverShare * static_cast<double>(tets);
+  many = exceedsSliverShare(total, tets);
   return status;
 }
 

@@ -57,7 +57,7 @@ std::string tetgenSwitches(
 bool holdsManySlivers(const PartitionMesh& partition, const RefinementContext& context,
   const PartitionRefinement& refinement)
 {
-  std::size_t slivers = 0;
+  std::int64_t slivers = 0;
   for (const Tet& tet : partition.tets)
   {
     const double* p[4];
@@ -70,8 +70,7 @@ bool holdsManySlivers(const PartitionMesh& partition, const RefinementContext& c
       ++slivers;
     }
   }
-  return static_cast<double>(slivers) >
-    RemeshSliverShare * static_cast<double>(partition.tets.size());
+  return exceedsSliverShare(slivers, partition.tets.size());
 }
 
 // One TetGen call of a partition: the order the tets (or when remeshing, the kept faces) are

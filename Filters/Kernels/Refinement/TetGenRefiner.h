@@ -45,6 +45,12 @@ constexpr double TetGenRadiusPerSize = 0.7;
 // faces and points instead of refined (see refinePartitionDelaunay).
 constexpr double RemeshSliverDegrees = 1.0;
 constexpr double RemeshSliverShare = 0.001;
+// Whether `slivers` (tets under RemeshSliverDegrees) are more than RemeshSliverShare of `tets`: the
+// rule for a partition, the sweep across former interfaces and a sliver-laden input alike.
+inline bool exceedsSliverShare(std::int64_t slivers, std::size_t tets)
+{
+  return static_cast<double>(slivers) > RemeshSliverShare * static_cast<double>(tets);
+}
 // About how many tets TetGen makes of `volume` under the bound: its tets average about a third
 // of the bound (measured on cubes and FinFETs). Used by the size guard and the partition count.
 double forecastDelaunayTets(double volume, double maximumVolume);

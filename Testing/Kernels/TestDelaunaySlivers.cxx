@@ -1,0 +1,404 @@
+// Delaunay refinement of sliver-laden meshes: a partition full of slivers meshed anew around a
+// cavity, the whole method on a sliver-laden two-material block (conforming, conserving, the same
+// for any thread count, with and without the sweep across former interfaces, and with the input
+// meshed anew first), and the sweep's kernel dropping only the interior points refinement made.
+#include "AdaptationDriver.h"
+#include "Core/Geometry.h"
+#include "Core/TetQuality.h"
+#include "DelaunayTestSupport.h"
+#include "MeshChecks.h"
+#include "Refinement/TetGenRefiner.h"
+#include "ResultComparison.h"
+#include "TestHarness.h"
+#include "TetGenWorkers.h"
+
+#define TETLIBRARY
+#include <tetgen.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+using namespace cgmesh;
+using cgmesh_test::delaunayOptions;
+using cgmesh_test::PartitionSetting;
+using cgmesh_test::run;
+
+namespace
+{
+
+// A block with a cube inside, both materials filled by TetGen with pseudo-random points and no
+// quality bound: full of slivers, as unstructured meshes made without one are, while the faces of
+// both cubes are good triangles. Region 1 is the block around the inner cube, region 2 the cube.
+TetMesh sliverLadenBlock(int pointCount)
+{
+  tetgenio in, out;
+  in.numberofpoints = 16 + pointCount;
+  in.pointlist = new REAL[3 * in.numberofpoints];
+  std::uint64_t state = 12345;
+  for (int i = 0; i < in.numberofpoints; ++i)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const int corner = (i >> axis) & 1;
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      in.pointlist[3 * i + axis] = i < 8 ? corner
+        : i < 16                         ? 0.35 + 0.3 * corner
+                                         : static_cast<double>(state >> 11) / 9007199254740992.0;
+    }
+  }
+  // The six faces of each cube, as quadrilaterals of corner indices.
+  const int faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  in.numberoffacets = 12;
+  in.facetlist = new tetgenio::facet[12];
+  for (int f = 0; f < 12; ++f)
+  {
+    tetgenio::facet& facet = in.facetlist[f];
+    tetgenio::init(&facet);
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(facet.polygonlist);
+    facet.polygonlist[0].numberofvertices = 4;
+    facet.polygonlist[0].vertexlist = new int[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      facet.polygonlist[0].vertexlist[k] = faces[f % 6][k] + (f < 6 ? 0 : 8);
+    }
+  }
+  in.numberofregions = 2;
+  in.regionlist = new REAL[10]{ 0.1, 0.1, 0.1, 1, -1, 0.5, 0.5, 0.5, 2, -1 };
+  tetgenbehavior behaviour;
+  behaviour.parse_commandline(const_cast<char*>("pAQ"));
+  tetrahedralize(&behaviour, &in, &out);
+  TetMesh mesh;
+  mesh.coordinates.assign(out.pointlist, out.pointlist + 3 * out.numberofpoints);
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+  {
+    Tet tet;
+    std::copy_n(out.tetrahedronlist + 4 * t, 4, tet.begin());
+    if (signedVolume6(mesh, tet) < 0)
+    {
+      std::swap(tet[0], tet[1]);
+    }
+    mesh.tets.push_back(tet);
+    mesh.regions.push_back(static_cast<int>(std::lround(out.tetrahedronattributelist[t])));
+  }
+  return mesh;
+}
+
+// The share of tets whose smallest dihedral angle is below `degrees`.
+double shareBelow(const TetList& tets, const std::vector<double>& coordinates, double degrees)
+{
+  std::size_t below = 0;
+  for (const Tet& tet : tets)
+  {
+    below += minimumDihedralAngle(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+               coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]) < degrees;
+  }
+  return static_cast<double>(below) / static_cast<double>(tets.size());
+}
+
+// The sliver-laden block without its inner cube (region 2): a partition around a cavity of others.
+PartitionMesh partitionAroundCavity(const TetMesh& mesh)
+{
+  PartitionMesh partition;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    if (mesh.regions[t] != 2)
+    {
+      partition.tets.push_back(mesh.tets[t]);
+      partition.regions.push_back(mesh.regions[t]);
+      partition.parentCells.push_back(t);
+    }
+  }
+  return partition;
+}
+
+// A TetGen runner in one worker that checks each call meshes anew (switches starting pA).
+TetGenRunner remeshingRunner(TetGenWorkerPool& pool)
+{
+  return [&pool](const tetgenio& in, const std::string& switches, tetgenio& out)
+  {
+    CHECK(switches.rfind("pA", 0) == 0);
+    return pool.run(0, in, switches, out);
+  };
+}
+
+// A partition full of slivers is meshed anew from its kept faces and points (switch p), not
+// refined (switch r): TetGen cannot split a kept face, and refining slivers that rest on them
+// costs it minutes and leaves worse ones. The partition encloses a cavity (tets of other
+// partitions), which TetGen fills too: those tets and their points must not come back.
+void test_sliver_laden_partition_is_meshed_anew_around_a_cavity()
+{
+  const TetMesh mesh = sliverLadenBlock(1500);
+  CHECK(shareBelow(mesh.tets, mesh.coordinates, RemeshSliverDegrees) > 10 * RemeshSliverShare);
+  PartitionMesh partition = partitionAroundCavity(mesh);
+  double cavityVolume = 0;
+  std::map<int, double> volumeOfRegion;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    const double volume = signedVolume6(mesh, mesh.tets[t]) / 6.0;
+    (mesh.regions[t] == 2 ? cavityVolume : volumeOfRegion[mesh.regions[t]]) += volume;
+  }
+  CHECK(cavityVolume > 0.01);
+  const DelaunayParameters parameters{ 0.5 / mesh.numberOfTets(), 2.0, false };
+  const PartitionSetting setting(mesh, parameters);
+  const RefinementContext& context = setting.context;
+  TetGenWorkerPool pool(1);
+  const TetGenRunner runner = remeshingRunner(pool);
+  PartitionRefinement refinement;
+  DelaunayOutcome outcome;
+  const std::size_t inputTets = partition.tets.size();
+  CHECK(refinePartitionDelaunay(
+    partition, context, EdgeMidpointMap(), parameters, runner, refinement, outcome)
+          .ok());
+  CHECK(outcome.remeshed && !outcome.fellBack);
+  CHECK(partition.tets.size() > 2 * inputTets);
+
+  // Every point is the input's or one TetGen inserted and a tet uses; the cavity stays empty.
+  std::vector<double> coordinates = mesh.coordinates;
+  coordinates.insert(
+    coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
+  const auto globalOf = [&mesh](PointId p)
+  {
+    return p >= 0 ? p : mesh.numberOfPoints() - p - 1;
+  };
+  std::vector<char> used(coordinates.size() / 3, 0);
+  std::map<int, double> volumeAfter;
+  TetList tets;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    Tet tet;
+    for (int k = 0; k < 4; ++k)
+    {
+      tet[k] = globalOf(partition.tets[t][k]);
+      used[tet[k]] = 1;
+    }
+    const double volume =
+      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]);
+    CHECK(volume > 0);
+    volumeAfter[partition.regions[t]] += volume / 6.0;
+    tets.push_back(tet);
+  }
+  CHECK(std::count(used.begin() + mesh.numberOfPoints(), used.end(), 0) == 0);
+  CHECK_EQUAL(refinement.newPointSources.size(), refinement.newCoordinates.size() / 3);
+  CHECK_EQUAL(volumeAfter.size(), volumeOfRegion.size());
+  for (const auto& region : volumeOfRegion)
+  {
+    CHECK_CLOSE(volumeAfter[region.first], region.second, 1e-12);
+  }
+  // Meshed anew, the partition holds far fewer slivers than it was given.
+  const double before = shareBelow(mesh.tets, mesh.coordinates, RemeshSliverDegrees);
+  const double after = shareBelow(tets, coordinates, RemeshSliverDegrees);
+  std::cout << "share of tets under " << RemeshSliverDegrees << " degrees: " << before
+            << " before, " << after << " after\n";
+  CHECK(after < 0.25 * before);
+}
+
+// The whole method on a sliver-laden two-material mesh: conforming, conserving, the same for any
+// thread count, and its partitions meshed anew.
+void test_sliver_laden_mesh_conforms_across_threads()
+{
+  const TetMesh input = sliverLadenBlock(1500);
+  AdaptationOptions options = delaunayOptions(1, 1);
+  options.numberOfPartitions = 8;
+  options.volumeFactor = 0.5;
+  options.improveInput = false; // refined as given (see the next test)
+  const AdaptationResult serial = run(input, options);
+  cgmesh_test::checkValidAndConserving(input, serial.mesh);
+  CHECK(serial.summary.tetgenRemeshed > 0);
+  CHECK(serial.mesh.numberOfTets() > 2 * input.numberOfTets());
+  std::cout << "sliver-laden block: " << serial.summary.tetgenRemeshed << " of "
+            << options.numberOfPartitions << " partitions meshed anew, "
+            << serial.summary.delaunayFallbacks << " fallbacks\n";
+  options.numberOfThreads = 2;
+  CHECK(cgmesh_test::identicalResults(serial, run(input, options)));
+
+  // The sweep across former interfaces meshed its boxes anew without the points refinement had
+  // crowded there: the slivers those made are gone, and no point is left over but those.
+  CHECK(serial.summary.sweepRemeshedBoxes > 0 && serial.summary.sweepDroppedPoints > 0);
+  CHECK_EQUAL(serial.summary.sweepRemeshFailures, std::int64_t(0));
+  CHECK(std::none_of(serial.summary.warnings.begin(), serial.summary.warnings.end(),
+    [](const AdaptationWarning& warning)
+    { return warning.kind == WarningKind::UnusedPointsRemoved; }));
+  options.numberOfThreads = 1;
+  options.remeshAcrossFormerInterfaces = false;
+  const AdaptationResult unswept = run(input, options);
+  CHECK_EQUAL(unswept.summary.sweepRemeshedBoxes, std::int64_t(0));
+  const double sliversAfterSweep = shareBelow(serial.mesh.tets, serial.mesh.coordinates, 1.0);
+  const double sliversWithout = shareBelow(unswept.mesh.tets, unswept.mesh.coordinates, 1.0);
+  std::cout << "share of output tets under 1 degree: " << sliversAfterSweep << " with the sweep ("
+            << serial.summary.sweepRemeshedBoxes << " boxes, " << serial.summary.sweepDroppedPoints
+            << " points dropped), " << sliversWithout << " without\n";
+  CHECK(sliversAfterSweep < 0.25 * sliversWithout);
+}
+
+// With ImproveInput, a sliver-laden input is meshed anew before it is refined: its interface
+// rounds first, then TetGen on the clusters of its slivers with the radius-edge bound alone, then
+// improvement. Refinement's partitions then hold TetGen's tets, not the input's slivers: fewer of
+// them are meshed anew, and the output is conforming, conserving and the same for any thread
+// count, with no point left over but those the clusters dropped.
+void test_sliver_laden_input_is_meshed_anew_first()
+{
+  const TetMesh input = sliverLadenBlock(1500);
+  AdaptationOptions options = delaunayOptions(1, 1);
+  options.numberOfPartitions = 8;
+  options.volumeFactor = 0.5;
+  options.improveQuality = true;
+  options.improveInput = false;
+  const AdaptationResult refinedAsGiven = run(input, options);
+  options.improveInput = true;
+  const AdaptationResult serial = run(input, options);
+  cgmesh_test::checkValidAndConserving(input, serial.mesh);
+  CHECK(serial.summary.inputRemeshedBoxes > 0 && serial.summary.inputDroppedPoints > 0);
+  CHECK_EQUAL(serial.summary.inputRemeshFailures, std::int64_t(0));
+  CHECK_EQUAL(serial.summary.delaunayFallbacks, std::int64_t(0));
+  CHECK(std::none_of(serial.summary.warnings.begin(), serial.summary.warnings.end(),
+    [](const AdaptationWarning& warning)
+    { return warning.kind == WarningKind::UnusedPointsRemoved; }));
+  CHECK(serial.summary.tetgenRemeshed < refinedAsGiven.summary.tetgenRemeshed);
+  CHECK_EQUAL(refinedAsGiven.summary.inputRemeshedBoxes, std::int64_t(0));
+  const double under = shareBelow(serial.mesh.tets, serial.mesh.coordinates, 1.0);
+  const double underAsGiven =
+    shareBelow(refinedAsGiven.mesh.tets, refinedAsGiven.mesh.coordinates, 1.0);
+  std::cout << "sliver-laden block meshed anew first: " << serial.summary.inputRemeshedBoxes
+            << " clusters (" << serial.summary.inputDroppedPoints << " points dropped), "
+            << serial.summary.tetgenRemeshed << " partitions meshed anew in refinement (against "
+            << refinedAsGiven.summary.tetgenRemeshed << "), share of output tets under 1 degree "
+            << under << " (against " << underAsGiven << ")\n";
+  CHECK(under <= underAsGiven);
+  options.numberOfThreads = 2;
+  CHECK(cgmesh_test::identicalResults(serial, run(input, options)));
+}
+
+// The sweep's kernel: a partition meshed anew from its kept faces drops exactly its interior
+// points from `firstDroppablePoint` on, keeps every other point, its region volumes and the cavity
+// of other partitions it encloses.
+void test_sweep_box_drops_only_interior_points_refinement_made()
+{
+  const TetMesh mesh = sliverLadenBlock(1500);
+  const PartitionMesh partition = partitionAroundCavity(mesh);
+  // The points of kept faces, found here on their own: faces of one tet of the partition, or of
+  // two tets of different regions.
+  std::map<std::array<PointId, 3>, std::vector<std::size_t>> tetsOfFace;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      std::array<PointId, 3> face;
+      for (int k = 0, n = 0; k < 4; ++k)
+      {
+        if (k != skip)
+        {
+          face[n++] = partition.tets[t][k];
+        }
+      }
+      std::sort(face.begin(), face.end());
+      tetsOfFace[face].push_back(t);
+    }
+  }
+  std::vector<char> onKeptFace(mesh.numberOfPoints(), 0), inPartition(mesh.numberOfPoints(), 0);
+  for (const auto& entry : tetsOfFace)
+  {
+    const std::vector<std::size_t>& owners = entry.second;
+    if (owners.size() == 1 || partition.regions[owners[0]] != partition.regions[owners[1]])
+    {
+      for (PointId p : entry.first)
+      {
+        onKeptFace[p] = 1;
+      }
+    }
+  }
+  for (const Tet& tet : partition.tets)
+  {
+    for (PointId p : tet)
+    {
+      inPartition[p] = 1;
+    }
+  }
+  const PointId firstDroppable = mesh.numberOfPoints() / 2; // as if refinement made the rest
+  std::int64_t droppable = 0;
+  for (PointId p = firstDroppable; p < mesh.numberOfPoints(); ++p)
+  {
+    droppable += inPartition[p] && !onKeptFace[p];
+  }
+  CHECK(droppable > 100);
+
+  const DelaunayParameters parameters{ 0.5 / mesh.numberOfTets(), 2.0, false };
+  const PartitionSetting setting(mesh, parameters);
+  TetGenWorkerPool pool(1);
+  const TetGenRunner runner = remeshingRunner(pool);
+  PartitionRefinement refinement;
+  DelaunayOutcome outcome;
+  PartitionMesh remeshed = partition;
+  CHECK(remeshPartitionDelaunay(
+    remeshed, setting.context, parameters, firstDroppable, runner, refinement, outcome)
+          .ok());
+  CHECK(outcome.remeshed && !outcome.fellBack);
+  CHECK_EQUAL(outcome.droppedPoints, droppable);
+  CHECK(refinement.newPointSources.empty() || outcome.tetgenPoints > 0);
+
+  std::vector<char> usedAfter(mesh.numberOfPoints(), 0);
+  std::map<int, double> before, after;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    before[partition.regions[t]] += signedVolume6(mesh, partition.tets[t]) / 6.0;
+  }
+  std::vector<double> coordinates = mesh.coordinates;
+  coordinates.insert(
+    coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
+  for (std::size_t t = 0; t < remeshed.tets.size(); ++t)
+  {
+    Tet tet;
+    for (int k = 0; k < 4; ++k)
+    {
+      const PointId p = remeshed.tets[t][k];
+      tet[k] = p >= 0 ? p : mesh.numberOfPoints() - p - 1;
+      if (p >= 0)
+      {
+        usedAfter[p] = 1;
+      }
+    }
+    const double volume =
+      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]);
+    CHECK(volume > 0);
+    after[remeshed.regions[t]] += volume / 6.0;
+  }
+  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  {
+    const bool dropped = p >= firstDroppable && inPartition[p] && !onKeptFace[p];
+    CHECK_EQUAL(static_cast<int>(usedAfter[p]), static_cast<int>(inPartition[p] && !dropped));
+  }
+  CHECK_EQUAL(after.size(), before.size());
+  for (const auto& region : before)
+  {
+    CHECK_CLOSE(after[region.first], region.second, 1e-12);
+  }
+
+  // A failed call leaves the partition as it was.
+  PartitionMesh kept = partition;
+  PartitionRefinement untouched;
+  DelaunayOutcome failed;
+  CHECK(remeshPartitionDelaunay(
+    kept, setting.context, parameters, firstDroppable,
+    [](const tetgenio&, const std::string&, tetgenio&) { return std::string("refused"); },
+    untouched, failed)
+          .ok());
+  CHECK(failed.fellBack && failed.reason == "refused" && !failed.remeshed);
+  CHECK(kept.tets == partition.tets && untouched.newCoordinates.empty());
+}
+
+} // namespace
+
+int main()
+{
+  test_sliver_laden_partition_is_meshed_anew_around_a_cavity();
+  test_sliver_laden_mesh_conforms_across_threads();
+  test_sliver_laden_input_is_meshed_anew_first();
+  test_sweep_box_drops_only_interior_points_refinement_made();
+  return cgmesh_test::finish("TestDelaunaySlivers");
+}
