@@ -71,10 +71,15 @@ Status improveAcrossFormerInterfaces(const ColorLoopSetup& setup, const Adaptati
   // Box faces freeze vertices in their turn: a second layout shifted by half a box frees them.
   // The tets that stayed out of the first layout's boxes are as they were, so the second looks
   // for work in those boxes only.
+  // Only former interface vertices are collapsed: the others were free in their partitions,
+  // whose coarsening tried their short edges. Letting every short edge count made the FinFET's
+  // sweeps with a size field take up almost the whole mesh, for collapses that failed again.
+  ColorLoopSetup sweeps = setup;
+  sweeps.improvement.collapsibleVertices = &formerInterface;
   std::size_t candidates = state.partitions.size();
   for (int sweepIndex = 0; sweepIndex < 2 && candidates > 0; ++sweepIndex)
   {
-    Status status = improveOverBoxes(setup, options, boxesPerAxis, sweepIndex, formerInterface,
+    Status status = improveOverBoxes(sweeps, options, boxesPerAxis, sweepIndex, formerInterface,
       candidates, state, summary, reporter);
     if (!status.ok() || summary.aborted)
     {

@@ -1,6 +1,7 @@
-// Quality improvement: each operation on a hand-made configuration, then the whole pipeline on a
-// multi-material device: conformity, conservation, fixed interfaces, better worst tets,
-// identical output across thread counts; and the device's input improved before refinement.
+// Quality improvement: each operation on a hand-made configuration (and coarsening only where it
+// may collapse), then the whole pipeline on a multi-material device: conformity, conservation,
+// fixed interfaces, better worst tets, identical output across thread counts; and the device's
+// input improved before refinement.
 #include "AdaptationDriver.h"
 #include "Core/TetQuality.h"
 #include "FinFetGenerator.h"
@@ -131,6 +132,46 @@ void test_edge_removal_three_to_two()
   CHECK(after.isValid());
   CHECK_CLOSE(after.volume, before.volume, 1e-12);
   CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
+}
+
+// Coarsening a star whose inner vertex lies next to corner 0: with h = 1.5 everywhere only the
+// edge from the inner vertex to corner 0 is shorter than h / sqrt(2), and collapsing it leaves
+// the octahedron as four tets around its diagonal (corner 0 to corner 1, 2 < sqrt(2) h). Done
+// where the inner vertex may be collapsed (no flags, or flagged), refused where it is not
+// flagged; the volume is kept either way.
+void test_collapse_only_where_flagged()
+{
+  for (int flags = 0; flags < 3; ++flags) // none, inner vertex not flagged, flagged
+  {
+    std::vector<double> coordinates;
+    const double inner[3] = { 0.7, 0.05, -0.02 };
+    PartitionMesh star = starAround(coordinates, inner);
+    const MeshReport before = inspectMesh(asMesh(star, coordinates));
+    std::vector<double> provisional, sizes(7, 1.5), provisionalSizes;
+    PartitionPoints points{ &coordinates, &provisional, &sizes, &provisionalSizes };
+    std::vector<char> collapsible(7, 0);
+    collapsible[6] = flags == 2;
+    ImprovementParameters parameters;
+    parameters.improve = false;
+    parameters.coarsen = true;
+    parameters.collapsibleVertices = flags == 0 ? nullptr : &collapsible;
+    ImprovementStatistics statistics;
+    std::vector<PointId> moved;
+    CHECK(improvePartition(star, points, parameters, statistics, moved).ok());
+    const bool collapsed = flags != 1;
+    CHECK_EQUAL(statistics.edgeCollapses, collapsed ? 1 : 0);
+    CHECK_EQUAL(star.tets.size(), collapsed ? 4u : 8u);
+    const bool innerUsed = std::any_of(star.tets.begin(), star.tets.end(),
+      [](const Tet& tet) { return std::find(tet.begin(), tet.end(), 6) != tet.end(); });
+    CHECK(innerUsed != collapsed);
+    const MeshReport after = inspectMesh(asMesh(star, coordinates));
+    CHECK_EQUAL(after.invertedTets + after.degenerateTets + after.overSharedFaces, 0);
+    CHECK_EQUAL(after.misorientedFacePairs, 0);
+    CHECK_EQUAL(after.unusedPoints, collapsed ? 1 : 0); // the inner vertex, left by the merge
+    CHECK_EQUAL(after.boundaryFaces, before.boundaryFaces);
+    CHECK_CLOSE(after.volume, before.volume, 1e-12);
+    CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
+  }
 }
 
 // Moved and derived points are relocated in the input: linear point data stays exact.
@@ -297,6 +338,7 @@ int main()
 {
   test_smoothing_moves_free_vertex_only();
   test_edge_removal_three_to_two();
+  test_collapse_only_where_flagged();
   test_device_refinement_with_improvement();
   test_improvement_over_several_passes();
   test_input_improved_before_refinement();

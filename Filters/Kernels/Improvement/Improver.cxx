@@ -94,6 +94,8 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
   }
   this->Fixedness.assign(this->IdOf.size(), Unknown);
   this->Moved.assign(this->IdOf.size(), 0);
+  this->LastChange.assign(this->IdOf.size(), 0);
+  this->FailedCollapseAt.assign(this->IdOf.size(), 0);
   this->NeighbourMark.assign(this->IdOf.size(), 0);
 }
 
@@ -112,16 +114,23 @@ bool Improver::isFixed(int v)
     return known == Fixed;
   }
   // Each face at v is met as the edge (x, y) of its other two corners, with its tet's region, in
-  // a small hash table: v is fixed when an edge is met once, or by tets of two regions.
+  // a small hash table: v is fixed when an edge is met once, or by tets of two regions. Slots
+  // carry the number of the call that filled them, so the table is never cleared, and the edges
+  // met once are counted as they come, so it is never scanned.
   std::size_t capacity = 16;
   while (capacity < 6 * this->Incident[v].size()) // three faces per tet, at most half full
   {
     capacity *= 2;
   }
   std::vector<LinkEdge>& table = this->LinkEdges;
-  table.assign(capacity, LinkEdge());
+  if (table.size() < capacity)
+  {
+    table.assign(capacity, LinkEdge());
+  }
+  const unsigned call = ++this->LinkEdgeCall;
   const std::size_t mask = capacity - 1;
   bool fixed = false;
+  int metOnce = 0;
   for (int t : this->Incident[v])
   {
     const Corners& c = this->Tets[t];
@@ -144,13 +153,15 @@ bool Improver::isFixed(int v)
       for (std::size_t at = (key * 0x9E3779B97F4A7C15ull) >> 40 & mask;; at = (at + 1) & mask)
       {
         LinkEdge& slot = table[at];
-        if (slot.count == 0)
+        if (slot.call != call)
         {
-          slot = { key, 1, this->Regions[t] };
+          slot = { key, call, 1, this->Regions[t] };
+          ++metOnce;
           break;
         }
         if (slot.key == key)
         {
+          metOnce -= slot.count == 1;
           ++slot.count;
           fixed = slot.region != this->Regions[t];
           break;
@@ -158,10 +169,7 @@ bool Improver::isFixed(int v)
       }
     }
   }
-  for (std::size_t at = 0; at < capacity && !fixed; ++at)
-  {
-    fixed = table[at].count == 1;
-  }
+  fixed = fixed || metOnce > 0;
   known = fixed ? Fixed : Free;
   return fixed;
 }
@@ -189,6 +197,10 @@ void Improver::addTet(const Corners& corners, int region, CellId parent)
   for (int v : corners)
   {
     this->Incident[v].push_back(t);
+    if (!this->LastChange.empty()) // built: the constructor's tets are no change
+    {
+      this->noteChangeAt(v);
+    }
   }
 }
 
@@ -197,6 +209,7 @@ void Improver::killTet(int t)
   this->Alive[t] = 0;
   for (int v : this->Tets[t])
   {
+    this->noteChangeAt(v);
     auto& list = this->Incident[v];
     list.erase(std::remove(list.begin(), list.end(), t), list.end());
   }

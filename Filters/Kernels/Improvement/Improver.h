@@ -81,7 +81,10 @@ private:
   bool hasEdgeLongerThanSize(const Corners& tet) const;
   void coarsen(ImprovementStatistics& statistics);
   bool collapseVertex(int a);
+  bool collapseMakesLongEdge(int a, int b, const std::vector<int>& ball);
   bool linkConditionHolds(int a, int b);
+  void noteChangeAt(int v) { this->LastChange[v] = ++this->ChangeClock; }
+  bool unchangedSinceFailedCollapse(int a) const;
 
   PartitionMesh& Partition;
   const PartitionPoints& Points;
@@ -101,19 +104,29 @@ private:
   };
   std::vector<char> Fixedness; // a Fixity per vertex, found when first asked (isFixed)
   std::vector<char> Moved;
+  // A failed collapse of a is a function of a's ball: its tets, their corners' positions and the
+  // incidence of those corners (the link condition). Every change stamps the vertices it touches
+  // with the clock, so a vertex whose ball holds no stamp newer than its failure would fail again
+  // and is not tried (EdgeCollapse.cxx).
+  std::uint64_t ChangeClock = 0;
+  std::vector<std::uint64_t> LastChange;       // clock of the last change at each vertex
+  std::vector<std::uint64_t> FailedCollapseAt; // clock when its collapse last failed; 0: never
   ImprovementParameters Parameters;
   // Scratch of collapseVertex and linkConditionHolds, kept for their memory.
   std::vector<std::pair<double, int>> CollapseCandidates;
   std::vector<int> LinkRing;
   std::vector<std::pair<int, int>> LinkRingEdges, LinkEdgesOfA, LinkEdgesOfB;
-  std::vector<unsigned> NeighbourMark; // LinkStamp where a vertex neighbours the collapsed end
+  // LinkStamp where a vertex neighbours the collapsed end, or is a new neighbour of the kept one
+  std::vector<unsigned> NeighbourMark;
   struct LinkEdge // a face at the vertex isFixed looks at, by its other two corners
   {
     std::uint64_t key = 0;
-    int count = 0; // 0: a free slot
+    unsigned call = 0; // the isFixed call that filled the slot; any other: a free slot
+    int count = 0;
     int region = 0;
   };
   std::vector<LinkEdge> LinkEdges; // scratch of isFixed
+  unsigned LinkEdgeCall = 0;
   unsigned LinkStamp = 0;
 };
 

@@ -373,6 +373,7 @@ bool Improver::smoothVertex(int v)
         this->Qualities[t] = this->quality(this->Tets[t]);
       }
       this->Moved[v] = 1;
+      this->noteChangeAt(v);
       return true;
     }
   }
@@ -440,18 +441,22 @@ void Improver::run(const ImprovementParameters& parameters, ImprovementStatistic
   }
 }
 
-// Whether edge (a, b) is shorter than h / sqrt(2) (see Improver::isShort).
-bool isShortEdge(PointId a, PointId b, const PartitionPoints& points)
+// Whether edge (a, b) is shorter than h / sqrt(2) (see Improver::isShort) with an end that may
+// be collapsed: work for coarsening.
+bool isCollapsibleShortEdge(
+  PointId a, PointId b, const PartitionPoints& points, const ImprovementParameters& parameters)
 {
-  return shorterThanSize(
-    squaredDistance(points.at(a), points.at(b)), points.sizeAt(a), points.sizeAt(b));
+  return (mayCollapse(a, parameters) || mayCollapse(b, parameters)) &&
+    shorterThanSize(
+      squaredDistance(points.at(a), points.at(b)), points.sizeAt(a), points.sizeAt(b));
 }
 
-bool hasShortEdge(const Tet& tet, const PartitionPoints& points)
+bool hasCollapsibleShortEdge(
+  const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters)
 {
   for (const auto& corners : TetEdgeCorners)
   {
-    if (isShortEdge(tet[corners[0]], tet[corners[1]], points))
+    if (isCollapsibleShortEdge(tet[corners[0]], tet[corners[1]], points, parameters))
     {
       return true;
     }
@@ -490,7 +495,7 @@ PointIdSet verticesOfWork(const PartitionMesh& partition, const PartitionPoints&
     }
     for (const auto& corners : TetEdgeCorners)
     {
-      if (isShortEdge(tet[corners[0]], tet[corners[1]], points))
+      if (isCollapsibleShortEdge(tet[corners[0]], tet[corners[1]], points, parameters))
       {
         vertices.emplace(tet[corners[0]], 0);
         vertices.emplace(tet[corners[1]], 0);
@@ -585,7 +590,7 @@ bool needsImprovement(
   const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters)
 {
   return improvement::isPoor(tet, points, parameters) ||
-    (parameters.coarsen && improvement::hasShortEdge(tet, points));
+    (parameters.coarsen && improvement::hasCollapsibleShortEdge(tet, points, parameters));
 }
 
 Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,

@@ -32,6 +32,11 @@ struct ImprovementParameters
   // min(collapseQualityFloor, their worst before).
   bool coarsen = false;
   double collapseQualityFloor = 0.3;
+  // With coarsening, when set: only the vertices flagged here (by global point id) may be
+  // collapsed, and only short edges with a flagged end are work. The sweeps across former
+  // interfaces pass the former interface vertices: every other vertex was free in its partition,
+  // whose improvement tried its short edges already.
+  const std::vector<char>* collapsibleVertices = nullptr;
   // Only tets whose mean ratio is below this are worked on: good tets are left alone, which is
   // where most of the time would go.
   double targetQuality = 0.5;
@@ -75,8 +80,17 @@ struct PartitionPoints
   }
 };
 
+// Whether vertex `id` may be collapsed (ImprovementParameters::collapsibleVertices).
+inline bool mayCollapse(PointId id, const ImprovementParameters& parameters)
+{
+  const std::vector<char>* flags = parameters.collapsibleVertices;
+  return !flags ||
+    (!isProvisional(id) && static_cast<std::size_t>(id) < flags->size() && (*flags)[id]);
+}
+
 // Whether improvePartition() works on `tet`: its mean ratio is below the target (with
-// `improve`), or an edge is shorter than the size field asks (with `coarsen`). The operations stay
+// `improve`), or an edge is shorter than the size field asks with an end that may be collapsed
+// (with `coarsen`). The operations stay
 // among the tets that share a vertex with such a tet.
 bool needsImprovement(
   const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters);
