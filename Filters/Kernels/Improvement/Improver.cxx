@@ -63,6 +63,9 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
   const std::size_t tetCount = partition.tets.size();
   std::vector<Corners> local(tetCount);
   this->LocalOf.reserve(tetCount / 4 + 16);
+  this->IdOf.reserve(tetCount / 4 + 16);
+  this->Position.reserve(tetCount / 4 + 16);
+  this->Size.reserve(tetCount / 4 + 16);
   for (std::size_t t = 0; t < tetCount; ++t)
   {
     for (int k = 0; k < 4; ++k)
@@ -182,6 +185,8 @@ int Improver::localVertex(PointId id)
     return *this->LocalOf.find(id);
   }
   this->IdOf.push_back(id);
+  this->Position.push_back(this->Points.at(id));
+  this->Size.push_back(this->Points.sizeAt(id));
   this->Incident.emplace_back();
   return next;
 }

@@ -43,7 +43,7 @@ public:
   void writeBack(std::vector<PointId>& movedPoints);
 
 private:
-  const double* at(int v) const { return this->Points.at(this->IdOf[v]); }
+  const double* at(int v) const { return this->Position[v]; }
   double quality(const Corners& t) const
   {
     return meanRatio(this->at(t[0]), this->at(t[1]), this->at(t[2]), this->at(t[3]));
@@ -73,7 +73,7 @@ private:
   bool isFixed(int v);
 
   // The size field (EdgeCollapse.cxx), and coarsening.
-  double sizeAt(int v) const { return this->Points.sizeAt(this->IdOf[v]); }
+  double sizeAt(int v) const { return this->Size[v]; }
   bool isShort(int a, int b) const;
   // Whether an edge from v to one of the `count` vertices at `neighbours` is longer than
   // sqrt(2) h (never without a size field: then nothing is looked at).
@@ -89,6 +89,10 @@ private:
   PartitionMesh& Partition;
   const PartitionPoints& Points;
   std::vector<PointId> IdOf;
+  // Per local vertex, where its coordinates live and its size: looked up once, as every test
+  // reads them (improvement adds no point, so the storage never moves).
+  std::vector<double*> Position;
+  std::vector<double> Size;
   FlatHashMap<PointId, int, PointIdHash, NoPoint> LocalOf;
   std::vector<Corners> Tets;
   std::vector<int> Regions;

@@ -347,7 +347,7 @@ bool Improver::smoothVertex(int v)
     }
   }
   const double largestBefore = this->largestVolume(star);
-  double* position = this->Points.at(this->IdOf[v]);
+  double* position = this->Position[v];
   const double original[3] = { position[0], position[1], position[2] };
   for (double step : { 1.0, 0.5 })
   {
