@@ -29,7 +29,7 @@ struct PartitionGraph
 };
 
 // The graph of the partition of `tets` given by `partitionOfCell`. The tets are scanned on the
-// calling thread; `parallelFor` sorts the memberships of interface points. The graph does not
+// calling thread; `parallelFor` gathers the partitions' neighbour rows. The graph does not
 // depend on it.
 Status buildPartitionGraph(const TetList& tets, const std::vector<int>& partitionOfCell,
   int numberOfPartitions, PointId numberOfPoints, const ParallelFor& parallelFor,
