@@ -35,29 +35,39 @@ void sortByPointThenPartition(std::vector<std::pair<PointId, int>>& pairs, Point
   {
     start[p + 1] += start[p];
   }
-  std::vector<std::pair<PointId, int>> sorted(pairs.size());
+  // Only the partitions are placed: the point of a slot follows from `start`.
+  std::vector<int> partitions(pairs.size());
   {
     std::vector<std::int64_t> next(start.begin(), start.end() - 1);
     for (const auto& pair : pairs)
     {
-      sorted[next[pair.first]++] = pair;
+      partitions[next[pair.first]++] = pair.second;
     }
   }
   std::size_t kept = 0;
   for (PointId p = 0; p < numberOfPoints; ++p)
   {
-    const auto first = sorted.begin() + start[p], last = sorted.begin() + start[p + 1];
-    std::sort(first, last);
-    for (auto it = first; it != last; ++it)
+    int* const first = partitions.data() + start[p];
+    int* const last = partitions.data() + start[p + 1];
+    for (int* it = first + 1; it < last; ++it) // a few entries: insertion sort
     {
-      if (kept == 0 || sorted[kept - 1] != *it)
+      const int value = *it;
+      int* hole = it;
+      for (; hole > first && hole[-1] > value; --hole)
       {
-        sorted[kept++] = *it;
+        *hole = hole[-1];
+      }
+      *hole = value;
+    }
+    for (int* it = first; it != last; ++it)
+    {
+      if (it == first || *it != it[-1])
+      {
+        pairs[kept++] = { p, *it };
       }
     }
   }
-  sorted.resize(kept);
-  pairs = std::move(sorted);
+  pairs.resize(kept);
 }
 
 // (point, partition) pairs for every point that lies in more than one partition, beyond the first
