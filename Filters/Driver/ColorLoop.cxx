@@ -42,6 +42,9 @@ struct IterationContext
   std::vector<PartitionRefinement> refinements;
   // Refinement loops: the partitions changed since their last improvement (see improvesNow).
   std::vector<char>* awaitingImprovement = nullptr;
+  // Every interface split the colours before the current one made in this iteration, by edge: a
+  // partition heals from it what its processed neighbours split (see postSplitsOfColor).
+  EdgeMidpointMap splitsOfEarlierColors = EdgeMidpointMap();
 };
 
 TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& state, int partition,
@@ -195,43 +198,33 @@ Status numberNewPoints(
   return status;
 }
 
-// The heal and adapt loops of one colour.
-Status refineMembers(IterationContext& iteration, const std::vector<int>& members, int color,
+// Adds the colour's interface splits, now in global ids, to those later colours heal from. Each
+// split goes in once; gathering every processed neighbour's whole outbox into a map per partition
+// instead inserted each split once per neighbour: at 65,536 partitions of 16 tets, most of the
+// healing time.
+void postSplitsOfColor(IterationContext& iteration, const std::vector<int>& members)
+{
+  for (int p : members)
+  {
+    Outbox& outbox = iteration.refinements[p].outbox;
+    postSplits(outbox, iteration.splitsOfEarlierColors);
+    outbox = Outbox();
+  }
+}
+
+// The adapt loop of one colour.
+Status refineMembers(IterationContext& iteration, const std::vector<int>& members,
   int iterationIndex, AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
 {
   const ColorLoopSetup& setup = iteration.setup;
-  const auto& colorOf = *setup.colorOfPartition;
   const std::int64_t count = static_cast<std::int64_t>(members.size());
-  std::vector<EdgeMidpointMap> received(members.size());
-
-  reporter.enter(Phase::Heal);
+  reporter.enter(Phase::Adapt);
+  std::vector<TaskReport> reports(members.size());
   Status status = runParallel(setup.threads, count,
     [&](std::int64_t i)
     {
-      const int p = members[i];
-      std::vector<const Outbox*> processedNeighbours;
-      const int* neighbours = setup.graph->neighboursOf(p);
-      for (int k = 0; k < setup.graph->degree(p); ++k)
-      {
-        if (colorOf[neighbours[k]] < color)
-        {
-          processedNeighbours.push_back(&iteration.refinements[neighbours[k]].outbox);
-        }
-      }
-      collectReceivedSplits(processedNeighbours, received[i]);
-    });
-  if (!status.ok())
-  {
-    return status;
-  }
-
-  reporter.enter(Phase::Adapt);
-  std::vector<TaskReport> reports(members.size());
-  status = runParallel(setup.threads, count,
-    [&](std::int64_t i)
-    {
-      reports[i] = refineOnePartition(iteration, state, members[i], received[i]);
-      received[i] = EdgeMidpointMap();
+      reports[i] =
+        refineOnePartition(iteration, state, members[i], iteration.splitsOfEarlierColors);
     });
   const bool beforeRefinement = setup.stage == Stage::ImproveInput;
   if (setup.remeshSweep)
@@ -315,14 +308,14 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
   return status;
 }
 
-Status processColor(IterationContext& iteration, const std::vector<int>& members, int color,
+Status processColor(IterationContext& iteration, const std::vector<int>& members,
   int iterationIndex, AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
 {
   const ColorLoopSetup& setup = iteration.setup;
   Status status = Status::success();
   if (setup.refine)
   {
-    status = refineMembers(iteration, members, color, iterationIndex, state, summary, reporter);
+    status = refineMembers(iteration, members, iterationIndex, state, summary, reporter);
     if (!status.ok())
     {
       return status;
@@ -341,7 +334,14 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
 
   // A sweep's numbering only gathers moved points: it counts as improvement.
   reporter.enter(setup.refine ? Phase::Post : Phase::Improve);
-  return numberNewPoints(iteration, members, state);
+  status = numberNewPoints(iteration, members, state);
+  if (!status.ok() || !setup.refine)
+  {
+    return status;
+  }
+  reporter.enter(Phase::Heal);
+  postSplitsOfColor(iteration, members);
+  return Status::success();
 }
 
 // Refuses an iteration whose forecast size exceeds the guard, before it allocates anything big.
@@ -496,8 +496,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
         summary.aborted = true;
         return Status::success();
       }
-      Status status =
-        processColor(context, members[color], color, iteration, state, summary, reporter);
+      Status status = processColor(context, members[color], iteration, state, summary, reporter);
       if (!status.ok())
       {
         return status;

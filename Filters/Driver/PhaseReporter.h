@@ -19,8 +19,8 @@ enum class Phase
   Partition, // METIS, or the cut along regions
   Graph,     // partition graph
   Color,     // colouring
-  Heal,      // reading processed neighbours' outboxes
-  Adapt,     // refining partitions, posting outboxes
+  Heal,      // interface vertices of each pass, posting a colour's splits for later colours
+  Adapt,     // refining partitions, healing from the posted splits
   Improve,   // quality improvement in partitions and both box sweeps (regrouping included)
   Post,      // numbering a colour's new points
   Merge,     // joining partitions, point provenance

@@ -37,12 +37,10 @@ void processInOrder(ManualRun& run, const std::vector<int>& order, double thresh
   context.squaredThreshold = threshold * threshold;
   context.templates = &run.templates;
   run.refinements.assign(run.partitions.size(), PartitionRefinement());
-  std::vector<const Outbox*> processed;
+  EdgeMidpointMap posted;
   for (int p : order)
   {
-    EdgeMidpointMap received;
-    collectReceivedSplits(processed, received);
-    CHECK(refinePartition(run.partitions[p], context, received, run.refinements[p]).ok());
+    CHECK(refinePartition(run.partitions[p], context, posted, run.refinements[p]).ok());
     const PointId first = static_cast<PointId>(run.coordinates.size() / 3);
     auto& refinement = run.refinements[p];
     finalizeNewPoints(run.partitions[p], refinement, first);
@@ -50,7 +48,7 @@ void processInOrder(ManualRun& run, const std::vector<int>& order, double thresh
       run.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
     run.newPointSources.insert(run.newPointSources.end(), refinement.newPointSources.begin(),
       refinement.newPointSources.end());
-    processed.push_back(&refinement.outbox);
+    postSplits(refinement.outbox, posted);
   }
 }
 

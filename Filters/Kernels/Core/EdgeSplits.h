@@ -92,24 +92,16 @@ struct OutboxEntry
 
 using Outbox = std::vector<OutboxEntry>;
 
-// Healing input: every split that the given (already processed) neighbours posted. Entries for
-// edges this partition does not hold are harmless: they are only ever looked up by edge.
-inline void collectReceivedSplits(
-  const std::vector<const Outbox*>& neighbourOutboxes, EdgeMidpointMap& received)
+// Adds a processed partition's interface splits, in global ids, to `posted`: the splits the
+// partitions processed after it heal from, looked up by edge. A partition only ever looks up
+// edges it holds, and an edge it shares was split by a neighbour, so one map for all processed
+// partitions serves every later one, with each split in it once.
+inline void postSplits(const Outbox& outbox, EdgeMidpointMap& posted)
 {
-  received.clear();
-  std::size_t total = 0;
-  for (const Outbox* outbox : neighbourOutboxes)
+  posted.reserve(posted.size() + outbox.size());
+  for (const OutboxEntry& entry : outbox)
   {
-    total += outbox->size();
-  }
-  received.reserve(total);
-  for (const Outbox* outbox : neighbourOutboxes)
-  {
-    for (const OutboxEntry& entry : *outbox)
-    {
-      received.emplace(entry.edge, entry.vertex);
-    }
+    posted.emplace(entry.edge, entry.vertex);
   }
 }
 

@@ -51,8 +51,11 @@ public:
     {
       return *known;
     }
+    // Only an edge between two interface vertices can be shared, so only such an edge can have
+    // been split by a neighbour: the others are not looked up among the posted splits.
+    const bool shareable = this->onInterface(key.low) && this->onInterface(key.high);
     PointId vertex;
-    if (const PointId* healed = this->Received.find(key))
+    if (const PointId* healed = shareable ? this->Received.find(key) : nullptr)
     {
       vertex = *healed;
       this->Refinement.newInterfacePoints.emplace(vertex, 0);
@@ -60,7 +63,7 @@ public:
     }
     else
     {
-      vertex = this->createMidpoint(key);
+      vertex = this->createMidpoint(key, shareable);
     }
     this->Created.emplace(key, vertex);
     return vertex;
@@ -69,7 +72,8 @@ public:
   void reserve(std::size_t expectedSplits) { this->Created.reserve(expectedSplits); }
 
 private:
-  PointId createMidpoint(const EdgeKey& key)
+  // `shareable`: both ends on an interface, so neighbours may hold the edge and heal the split.
+  PointId createMidpoint(const EdgeKey& key, bool shareable)
   {
     // Copies: the end points may themselves be new, and the vector below may reallocate.
     double pa[3], pb[3];
@@ -86,7 +90,7 @@ private:
       this->Refinement.newSizes.push_back(0.5 * (this->sizeOf(key.low) + this->sizeOf(key.high)));
     }
     ++this->Refinement.createdSplits;
-    if (this->onInterface(key.low) && this->onInterface(key.high))
+    if (shareable)
     {
       this->Refinement.outbox.push_back(OutboxEntry{ key, vertex });
       this->Refinement.newInterfacePoints.emplace(vertex, 0);
