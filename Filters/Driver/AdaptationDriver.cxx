@@ -158,12 +158,10 @@ const TemplateTable& templateTable(int threads)
   return templates;
 }
 
-ColorLoopSetup refinementSetup(
-  const AdaptationOptions& options, const AdaptationSummary& summary, const PartitionGraph& graph)
+ColorLoopSetup refinementSetup(const AdaptationOptions& options, const AdaptationSummary& summary)
 {
   const AdaptationPlan& plan = summary.plan;
   ColorLoopSetup setup;
-  setup.graph = &graph;
   setup.colorOfPartition = &summary.colorOfPartition;
   setup.numberOfColors = summary.numberOfColors;
   // TetGen meets a size field inside each partition in one call, and the interface edges are
@@ -337,7 +335,7 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   {
     return status;
   }
-  ColorLoopSetup setup = refinementSetup(options, summary, graph);
+  ColorLoopSetup setup = refinementSetup(options, summary);
   std::unique_ptr<TetGenWorkerPool> tetgenWorkers;
   std::mutex serialTetGen;
   if (options.method == RefinementMethod::Delaunay)

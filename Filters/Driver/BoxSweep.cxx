@@ -33,7 +33,6 @@ Status runSweepOverBoxes(ColorLoopSetup sweep, const AdaptationOptions& options,
   }
   if (status.ok())
   {
-    sweep.graph = &graph;
     sweep.colorOfPartition = &colorOfBox;
     sweep.numberOfColors = countColors(colorOfBox);
     sweep.numberOfIterations = 1;

@@ -36,7 +36,6 @@ using PartitionTetGenRunner = std::function<std::string(
 
 struct ColorLoopSetup
 {
-  const PartitionGraph* graph = nullptr;
   const std::vector<int>* colorOfPartition = nullptr;
   int numberOfColors = 0;
   int numberOfIterations = 1;
