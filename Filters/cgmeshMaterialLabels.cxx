@@ -2,6 +2,8 @@
 
 #include "cgmeshVTKConversion.h"
 
+#include "ParallelFor.h"
+
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <unordered_set>
 
 namespace cgmesh
@@ -65,8 +68,8 @@ std::vector<std::string> findMaterialLabelArrays(vtkUnstructuredGrid* grid)
   return names;
 }
 
-void combineMaterialLabels(
-  vtkUnstructuredGrid* grid, const std::vector<std::string>& arrayNames, TetMesh& mesh)
+Status combineMaterialLabels(
+  vtkUnstructuredGrid* grid, const std::vector<std::string>& arrayNames, int threads, TetMesh& mesh)
 {
   const vtkIdType cells = grid->GetNumberOfCells();
   std::vector<vtkDataArray*> arrays;
@@ -74,21 +77,45 @@ void combineMaterialLabels(
   {
     arrays.push_back(grid->GetCellData()->GetArray(name.c_str()));
   }
-  std::vector<long long> values(arrays.size());
-  auto readValues = [&](vtkIdType cell)
+  using Combination = std::vector<long long>;
+  auto readValues = [&](vtkIdType cell, Combination& values)
   {
     for (std::size_t k = 0; k < arrays.size(); ++k)
     {
       values[k] = static_cast<long long>(arrays[k]->GetComponent(cell, 0));
     }
   };
-  // Two passes over the arrays: the combinations first (numbered in sorted order), then each
-  // cell's number, so no per-cell copy of the values is kept.
-  std::map<std::vector<long long>, int> idOf;
-  for (vtkIdType cell = 0; cell < cells; ++cell)
+  // Ranges of cells run concurrently. Neighbouring cells mostly belong to one material, so each
+  // range looks a combination up only where it changes. Two passes: the combinations first
+  // (numbered in sorted order), then each cell's number.
+  const std::int64_t rangeSize = IndicesPerCopyRange;
+  const std::int64_t ranges = (cells + rangeSize - 1) / rangeSize;
+  std::vector<std::set<Combination>> combinationsOfRange(ranges);
+  Status status = forEachRange(parallelForOn(resolveThreadCount(threads)), cells, rangeSize,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      Combination values(arrays.size()), last;
+      for (vtkIdType cell = begin; cell < end; ++cell)
+      {
+        readValues(cell, values);
+        if (cell == begin || values != last)
+        {
+          combinationsOfRange[begin / rangeSize].insert(values);
+          last = values;
+        }
+      }
+    });
+  if (!status.ok())
   {
-    readValues(cell);
-    idOf.emplace(values, 0);
+    return status;
+  }
+  std::map<Combination, int> idOf;
+  for (const auto& combinations : combinationsOfRange)
+  {
+    for (const Combination& values : combinations)
+    {
+      idOf.emplace(values, 0);
+    }
   }
   int next = 0;
   for (auto& entry : idOf)
@@ -96,11 +123,22 @@ void combineMaterialLabels(
     entry.second = next++;
   }
   mesh.regions.resize(static_cast<std::size_t>(cells));
-  for (vtkIdType cell = 0; cell < cells; ++cell)
-  {
-    readValues(cell);
-    mesh.regions[cell] = idOf.at(values);
-  }
+  return forEachRange(parallelForOn(resolveThreadCount(threads)), cells, rangeSize,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      Combination values(arrays.size()), last;
+      int id = 0;
+      for (vtkIdType cell = begin; cell < end; ++cell)
+      {
+        readValues(cell, values);
+        if (cell == begin || values != last)
+        {
+          id = idOf.at(values);
+          last = values;
+        }
+        mesh.regions[cell] = id;
+      }
+    });
 }
 
 } // namespace cgmesh

@@ -32,9 +32,10 @@ std::string describeTriangle(const TriangleCells& cells, std::size_t index)
 
 bool hasTriangles(vtkUnstructuredGrid* grid)
 {
+  const unsigned char* types = cellTypesOf(grid);
   for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
   {
-    if (grid->GetCellType(cellId) == VTK_TRIANGLE)
+    if (types[cellId] == VTK_TRIANGLE)
     {
       return true;
     }

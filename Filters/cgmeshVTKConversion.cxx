@@ -14,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -28,12 +29,19 @@
 namespace cgmesh
 {
 
+const unsigned char* cellTypesOf(vtkUnstructuredGrid* grid)
+{
+  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+  return grid->GetNumberOfCells() > 0 && types ? types->GetPointer(0) : nullptr;
+}
+
 vtkIdType countNonTetrahedra(vtkUnstructuredGrid* grid, bool trianglesAccepted)
 {
+  const unsigned char* types = cellTypesOf(grid);
   vtkIdType count = 0;
   for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
   {
-    const int type = grid->GetCellType(cellId);
+    const int type = types[cellId];
     count += type != VTK_TETRA && !(trianglesAccepted && type == VTK_TRIANGLE);
   }
   return count;

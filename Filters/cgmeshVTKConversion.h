@@ -23,6 +23,10 @@ namespace cgmesh
 // Whether a VTK data type (VTK_INT, VTK_DOUBLE, ...) is an integer type, vtkIdType included.
 CGMESHFILTERS_EXPORT bool isIntegerDataType(int vtkType);
 
+// The cell type of every cell of `grid`, read from its types array (one virtual GetCellType()
+// call per cell cost 0.05 s on 844k cells); null when the grid has no cells.
+const unsigned char* cellTypesOf(vtkUnstructuredGrid* grid);
+
 // Number of cells of `grid` that are not linear tetrahedra (VTK_TETRA), nor triangles when
 // `trianglesAccepted`.
 CGMESHFILTERS_EXPORT vtkIdType countNonTetrahedra(

@@ -502,7 +502,13 @@ bool vtkCoarseGrainedMeshAdaptation::ConvertPiece(
   // Without a region array, the input's integer cell arrays guard the material interfaces.
   if (regionArrayName.empty() && !materialLabels.empty())
   {
-    cgmesh::combineMaterialLabels(run.tets, materialLabels, run.mesh);
+    status = cgmesh::combineMaterialLabels(
+      run.tets, materialLabels, this->Internals->Parameters.numberOfThreads, run.mesh);
+    if (!status.ok())
+    {
+      vtkErrorMacro(<< "Cannot read the input's material labels: " << status.message() << ".");
+      return false;
+    }
   }
   if (run.withTriangles && !(status = cgmesh::checkTriangleCells(run.mesh, run.triangles)).ok())
   {

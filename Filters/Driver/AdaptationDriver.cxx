@@ -448,7 +448,8 @@ Status adaptMesh(
   if (status.ok())
   {
     InputRepairs repairs;
-    status = prepareInput(rawInput, input, repairs);
+    status = prepareInput(
+      rawInput, input, repairs, parallelForOn(resolveThreadCount(options.numberOfThreads)));
     reportRepairs(rawInput, repairs, summary);
   }
   if (status.ok() && input.hasSizes())

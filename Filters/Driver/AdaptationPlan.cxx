@@ -10,6 +10,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 
 namespace cgmesh
@@ -172,12 +173,12 @@ int partitionsByRegion(const TetMesh& input, int partitionsPerRegion)
 
 // What Delaunay refinement makes of the input: under the volume bound, or with a size field (then
 // `volumeBound` is 0) tet by tet at the mean size of its corners.
-double forecastDelaunayOutput(const TetMesh& input, double volumeBound)
+double forecastDelaunayOutput(const TetMesh& input, double volumeBound, int threads)
 {
   if (!input.hasSizes())
   {
     return forecastDelaunayTets(
-      meanTetVolume(input) * static_cast<double>(input.numberOfTets()), volumeBound);
+      meanTetVolume(input, threads) * static_cast<double>(input.numberOfTets()), volumeBound);
   }
   return forecastDelaunayTetsForSizes(input.tets, input.coordinates, input.sizes);
 }
@@ -194,7 +195,9 @@ int automaticPartitions(const TetMesh& input, const AdaptationOptions& options, 
   {
     return AutomaticTemplatePartitions;
   }
-  const double partitions = forecastDelaunayOutput(input, volumeBound) / DelaunayTetsPerPartition;
+  const double partitions =
+    forecastDelaunayOutput(input, volumeBound, resolveThreadCount(options.numberOfThreads)) /
+    DelaunayTetsPerPartition;
   return static_cast<int>(std::lround(std::min<double>(
     MaximumAutomaticPartitions, std::max<double>(MinimumAutomaticPartitions, partitions))));
 }
@@ -248,28 +251,61 @@ PartitionerKind resolvePartitioner(const AdaptationOptions& options)
 
 } // namespace
 
+namespace
+{
+
+// The sum of perTet(t) over all tets: ranges summed concurrently, then added in range order, so
+// the sum is the same for any thread count.
+template <typename PerTet>
+double sumOverTets(const TetMesh& mesh, int threads, PerTet&& perTet)
+{
+  const std::int64_t rangeSize = IndicesPerCopyRange;
+  std::vector<double> sumOfRange((mesh.numberOfTets() + rangeSize - 1) / rangeSize, 0.0);
+  const Status status = forEachRange(parallelForOn(threads), mesh.numberOfTets(), rangeSize,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      double sum = 0;
+      for (CellId t = begin; t < end; ++t)
+      {
+        sum += perTet(mesh.tets[t]);
+      }
+      sumOfRange[begin / rangeSize] = sum;
+    });
+  if (!status.ok())
+  {
+    throw std::runtime_error(status.message());
+  }
+  double sum = 0;
+  for (double rangeSum : sumOfRange)
+  {
+    sum += rangeSum;
+  }
+  return sum;
+}
+
+} // namespace
+
 // Mean over the six edges of every tet (shared edges count once per tet, which weighs edges by
 // how many tets use them and needs no edge list).
-double meanTetEdgeLength(const TetMesh& mesh)
+double meanTetEdgeLength(const TetMesh& mesh, int threads)
 {
-  double sum = 0;
-  for (const Tet& tet : mesh.tets)
-  {
-    for (const auto& edge : TetEdgeCorners)
+  const double sum = sumOverTets(mesh, threads,
+    [&](const Tet& tet)
     {
-      sum += std::sqrt(squaredEdgeLength(mesh, tet[edge[0]], tet[edge[1]]));
-    }
-  }
+      double length = 0;
+      for (const auto& edge : TetEdgeCorners)
+      {
+        length += std::sqrt(squaredEdgeLength(mesh, tet[edge[0]], tet[edge[1]]));
+      }
+      return length;
+    });
   return mesh.tets.empty() ? 0 : sum / (6.0 * static_cast<double>(mesh.tets.size()));
 }
 
-double meanTetVolume(const TetMesh& mesh)
+double meanTetVolume(const TetMesh& mesh, int threads)
 {
-  double sum = 0;
-  for (const Tet& tet : mesh.tets)
-  {
-    sum += std::abs(signedVolume6(mesh, tet)) / 6.0;
-  }
+  const double sum = sumOverTets(
+    mesh, threads, [&](const Tet& tet) { return std::abs(signedVolume6(mesh, tet)) / 6.0; });
   return mesh.tets.empty() ? 0 : sum / static_cast<double>(mesh.tets.size());
 }
 
@@ -322,8 +358,9 @@ AdaptationPlan resolvePlan(
   }
   else if (options.method == RefinementMethod::Delaunay)
   {
-    plan.volumeBound = options.maximumVolume > 0 ? options.maximumVolume
-                                                 : options.volumeFactor * meanTetVolume(input);
+    plan.volumeBound = options.maximumVolume > 0
+      ? options.maximumVolume
+      : options.volumeFactor * meanTetVolume(input, plan.threads);
     plan.edgeLengthThreshold = interfaceEdgeLengthForVolume(plan.volumeBound);
     // Improvement must not undo Delaunay refinement's volume bound.
     plan.improvementVolumeBound = plan.volumeBound;
@@ -332,7 +369,7 @@ AdaptationPlan resolvePlan(
   {
     plan.edgeLengthThreshold = options.maximumEdgeLength > 0
       ? options.maximumEdgeLength
-      : options.edgeLengthFactor * meanTetEdgeLength(input);
+      : options.edgeLengthFactor * meanTetEdgeLength(input, plan.threads);
   }
   plan.partitions = resolvePartitions(input, options, plan.volumeBound, warnings);
   plan.partitioner = resolvePartitioner(options);

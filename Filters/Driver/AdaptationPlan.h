@@ -40,9 +40,9 @@ AdaptationPlan resolvePlan(
   const TetMesh& input, const AdaptationOptions& options, std::vector<AdaptationWarning>& warnings);
 
 // The input's mean tet edge length (over the six edges of every tet) and mean tet volume: what
-// EdgeLengthFactor and VolumeFactor scale.
-double meanTetEdgeLength(const TetMesh& mesh);
-double meanTetVolume(const TetMesh& mesh);
+// EdgeLengthFactor and VolumeFactor scale. The same for any thread count.
+double meanTetEdgeLength(const TetMesh& mesh, int threads = 1);
+double meanTetVolume(const TetMesh& mesh, int threads = 1);
 
 } // namespace cgmesh
 

@@ -3,6 +3,7 @@
 #include "Core/FaceKey.h"
 #include "Core/Geometry.h"
 #include "Core/LowestRootSets.h"
+#include "Core/ParallelSort.h"
 
 #include <algorithm>
 #include <array>
@@ -42,62 +43,91 @@ std::vector<PointId> usedPoints(const TetMesh& mesh)
 // cell only along axes where it lies within a tolerance of its cell's side (on 1 to 8 cells, not
 // always 27). Cells are found by binary search in the sorted buckets, so no hashing order reaches
 // the result.
-std::vector<std::pair<PointId, PointId>> coincidentPairs(
-  const TetMesh& mesh, const std::vector<PointId>& used, const double low[3], double tolerance)
+Status coincidentPairs(const TetMesh& mesh, const std::vector<PointId>& used, const double low[3],
+  double tolerance, const ParallelFor& parallelFor, std::vector<std::pair<PointId, PointId>>& pairs)
 {
   using Cell = std::array<std::int64_t, 3>;
   const double cellSize = 100 * tolerance;
-  std::vector<std::pair<Cell, PointId>> buckets;
-  buckets.reserve(used.size());
-  for (PointId p : used)
-  {
-    Cell cell;
-    for (int axis = 0; axis < 3; ++axis)
+  const std::int64_t count = static_cast<std::int64_t>(used.size());
+  std::vector<std::pair<Cell, PointId>> buckets(used.size());
+  Status status = forEachRange(parallelFor, count, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
     {
-      // At most 1 / (100 RelativeContactTolerance) cells per axis: no overflow.
-      cell[axis] =
-        static_cast<std::int64_t>(std::floor((mesh.point(p)[axis] - low[axis]) / cellSize));
-    }
-    buckets.emplace_back(cell, p);
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        const PointId p = used[i];
+        Cell cell;
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          // At most 1 / (100 RelativeContactTolerance) cells per axis: no overflow.
+          cell[axis] =
+            static_cast<std::int64_t>(std::floor((mesh.point(p)[axis] - low[axis]) / cellSize));
+        }
+        buckets[i] = { cell, p };
+      }
+    });
+  if (status.ok())
+  {
+    status = sortInParallel(buckets, parallelFor); // no two entries equal: the point ids differ
   }
-  std::sort(buckets.begin(), buckets.end());
   const double squaredTolerance = tolerance * tolerance;
   const double margin = 2.0 / 100; // a tolerance in cell widths, doubled against rounding
-  std::vector<std::pair<PointId, PointId>> pairs;
-  for (const auto& [cell, p] : buckets)
+  // Each range of buckets collects its pairs; joined in range order, they are the serial scan's.
+  const std::int64_t rangeSize = IndicesPerCopyRange;
+  std::vector<std::vector<std::pair<PointId, PointId>>> pairsOfRange(
+    (count + rangeSize - 1) / rangeSize);
+  if (status.ok())
   {
-    std::array<int, 3> from, to;
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      const double within = (mesh.point(p)[axis] - low[axis]) / cellSize - cell[axis];
-      from[axis] = within < margin ? -1 : 0;
-      to[axis] = within > 1 - margin ? 1 : 0;
-    }
-    for (int dx = from[0]; dx <= to[0]; ++dx)
-    {
-      for (int dy = from[1]; dy <= to[1]; ++dy)
+    status = forEachRange(parallelFor, count, rangeSize,
+      [&](std::int64_t begin, std::int64_t end)
       {
-        for (int dz = from[2]; dz <= to[2]; ++dz)
+        auto& pairs = pairsOfRange[begin / rangeSize];
+        for (std::int64_t i = begin; i < end; ++i)
         {
-          const Cell neighbour = { cell[0] + dx, cell[1] + dy, cell[2] + dz };
-          auto at =
-            std::lower_bound(buckets.begin(), buckets.end(), std::make_pair(neighbour, PointId(0)));
-          for (; at != buckets.end() && at->first == neighbour; ++at)
+          const auto& [cell, p] = buckets[i];
+          std::array<int, 3> from, to;
+          for (int axis = 0; axis < 3; ++axis)
           {
-            const PointId q = at->second;
-            if (q != p && squaredDistance(mesh.point(p), mesh.point(q)) <= squaredTolerance)
+            const double within = (mesh.point(p)[axis] - low[axis]) / cellSize - cell[axis];
+            from[axis] = within < margin ? -1 : 0;
+            to[axis] = within > 1 - margin ? 1 : 0;
+          }
+          for (int dx = from[0]; dx <= to[0]; ++dx)
+          {
+            for (int dy = from[1]; dy <= to[1]; ++dy)
             {
-              pairs.emplace_back(std::min(p, q), std::max(p, q));
+              for (int dz = from[2]; dz <= to[2]; ++dz)
+              {
+                const Cell neighbour = { cell[0] + dx, cell[1] + dy, cell[2] + dz };
+                auto at = std::lower_bound(
+                  buckets.begin(), buckets.end(), std::make_pair(neighbour, PointId(0)));
+                for (; at != buckets.end() && at->first == neighbour; ++at)
+                {
+                  const PointId q = at->second;
+                  if (q != p && squaredDistance(mesh.point(p), mesh.point(q)) <= squaredTolerance)
+                  {
+                    pairs.emplace_back(std::min(p, q), std::max(p, q));
+                  }
+                }
+              }
             }
           }
         }
-      }
-    }
+      });
+  }
+  if (!status.ok())
+  {
+    return status;
+  }
+  pairs.clear();
+  for (const auto& found : pairsOfRange)
+  {
+    pairs.insert(pairs.end(), found.begin(), found.end());
   }
   // Each pair was found from both ends (the neighbourhood test is not exactly symmetric).
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  return pairs;
+  return Status::success();
 }
 
 // Compressed lists: the entries of key k are values[offsets[k] .. offsets[k + 1]).
@@ -296,13 +326,13 @@ void joinMatchingFaces(
 
 } // namespace
 
-ContactGluing glueMatchingFaces(TetMesh& mesh)
+Status glueMatchingFaces(TetMesh& mesh, const ParallelFor& parallelFor, ContactGluing& outcome)
 {
-  ContactGluing outcome;
+  outcome = ContactGluing();
   const std::vector<PointId> used = usedPoints(mesh);
   if (used.empty())
   {
-    return outcome;
+    return Status::success();
   }
   double low[3], high[3];
   for (int axis = 0; axis < 3; ++axis)
@@ -320,10 +350,15 @@ ContactGluing glueMatchingFaces(TetMesh& mesh)
   outcome.tolerance = RelativeContactTolerance * std::sqrt(squaredDistance(low, high));
   if (!(outcome.tolerance > 0))
   {
-    return outcome; // every used point in one place: the tets are degenerate and refused later
+    return Status::success(); // every used point in one place: degenerate tets, refused later
   }
 
-  const auto pairs = coincidentPairs(mesh, used, low, outcome.tolerance);
+  std::vector<std::pair<PointId, PointId>> pairs;
+  const Status status = coincidentPairs(mesh, used, low, outcome.tolerance, parallelFor, pairs);
+  if (!status.ok() || pairs.empty())
+  {
+    return status; // or nothing coincides: every point is its own root
+  }
   std::vector<std::pair<std::int64_t, std::int64_t>> symmetric;
   for (const auto& [p, q] : pairs)
   {
@@ -334,10 +369,7 @@ ContactGluing glueMatchingFaces(TetMesh& mesh)
   const Lists partners(static_cast<std::size_t>(mesh.numberOfPoints()), symmetric);
 
   LowestRootSets<PointId> sets(mesh.numberOfPoints());
-  if (!pairs.empty())
-  {
-    joinMatchingFaces(mesh, partners, outcome.tolerance, sets);
-  }
+  joinMatchingFaces(mesh, partners, outcome.tolerance, sets);
   for (PointId p : used)
   {
     outcome.gluedPoints += sets.root(p) != p ? 1 : 0;
@@ -365,7 +397,7 @@ ContactGluing glueMatchingFaces(TetMesh& mesh)
       p = sets.root(p);
     }
   }
-  return outcome;
+  return Status::success();
 }
 
 } // namespace cgmesh

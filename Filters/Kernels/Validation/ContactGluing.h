@@ -9,6 +9,8 @@
 #ifndef cgmesh_ContactGluing_h
 #define cgmesh_ContactGluing_h
 
+#include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 
 namespace cgmesh
@@ -28,8 +30,9 @@ constexpr double RelativeContactTolerance = 1e-10;
 
 // Rewrites `mesh.tets` so that glued copies refer to the lowest id among them; coordinates and
 // point ids are untouched (the dropped copies become unused). The result does not depend on the
-// order in which faces or points are visited.
-ContactGluing glueMatchingFaces(TetMesh& mesh);
+// order in which faces or points are visited, nor on `parallelFor`, which runs the search for
+// coincident points.
+Status glueMatchingFaces(TetMesh& mesh, const ParallelFor& parallelFor, ContactGluing& outcome);
 
 } // namespace cgmesh
 

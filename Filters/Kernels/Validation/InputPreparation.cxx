@@ -39,29 +39,51 @@ Status checkCoordinates(const TetMesh& mesh)
   return Status::success();
 }
 
-// Reorients inverted tets; refuses tets whose volume is zero relative to their size.
-Status orientTets(TetMesh& mesh, InputRepairs& repairs)
+// Reorients inverted tets; refuses tets whose volume is zero relative to their size. Ranges of
+// tets are checked concurrently and their counts added in range order.
+Status orientTets(TetMesh& mesh, InputRepairs& repairs, const ParallelFor& parallelFor)
 {
-  CellId degenerate = 0, first = -1;
-  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  struct Counts
   {
-    Tet& tet = mesh.tets[t];
-    double longestSquared = 0;
-    for (const auto& edge : TetEdgeCorners)
+    CellId degenerate = 0, firstDegenerate = -1, reoriented = 0;
+  };
+  const std::int64_t rangeSize = IndicesPerCopyRange;
+  std::vector<Counts> countsOfRange((mesh.numberOfTets() + rangeSize - 1) / rangeSize);
+  const Status status = forEachRange(parallelFor, mesh.numberOfTets(), rangeSize,
+    [&](std::int64_t begin, std::int64_t end)
     {
-      longestSquared =
-        std::max(longestSquared, squaredEdgeLength(mesh, tet[edge[0]], tet[edge[1]]));
-    }
-    const double volume6 = signedVolume6(mesh, tet);
-    if (!(std::abs(volume6) > 1e-12 * longestSquared * std::sqrt(longestSquared)))
-    {
-      first = degenerate++ == 0 ? t : first;
-    }
-    else if (volume6 < 0)
-    {
-      std::swap(tet[2], tet[3]);
-      ++repairs.reorientedTets;
-    }
+      Counts& counts = countsOfRange[begin / rangeSize];
+      for (CellId t = begin; t < end; ++t)
+      {
+        Tet& tet = mesh.tets[t];
+        double longestSquared = 0;
+        for (const auto& edge : TetEdgeCorners)
+        {
+          longestSquared =
+            std::max(longestSquared, squaredEdgeLength(mesh, tet[edge[0]], tet[edge[1]]));
+        }
+        const double volume6 = signedVolume6(mesh, tet);
+        if (!(std::abs(volume6) > 1e-12 * longestSquared * std::sqrt(longestSquared)))
+        {
+          counts.firstDegenerate = counts.degenerate++ == 0 ? t : counts.firstDegenerate;
+        }
+        else if (volume6 < 0)
+        {
+          std::swap(tet[2], tet[3]);
+          ++counts.reoriented;
+        }
+      }
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+  CellId degenerate = 0, first = -1;
+  for (const Counts& counts : countsOfRange)
+  {
+    first = degenerate == 0 ? counts.firstDegenerate : first;
+    degenerate += counts.degenerate;
+    repairs.reorientedTets += counts.reoriented;
   }
   if (degenerate > 0)
   {
@@ -75,7 +97,8 @@ Status orientTets(TetMesh& mesh, InputRepairs& repairs)
 
 } // namespace
 
-Status prepareInput(const TetMesh& input, TetMesh& prepared, InputRepairs& repairs)
+Status prepareInput(
+  const TetMesh& input, TetMesh& prepared, InputRepairs& repairs, const ParallelFor& parallelFor)
 {
   repairs = InputRepairs();
   prepared = input;
@@ -84,11 +107,16 @@ Status prepareInput(const TetMesh& input, TetMesh& prepared, InputRepairs& repai
   {
     return status;
   }
-  const ContactGluing gluing = glueMatchingFaces(prepared);
+  ContactGluing gluing;
+  status = glueMatchingFaces(prepared, parallelFor, gluing);
+  if (!status.ok())
+  {
+    return status;
+  }
   repairs.gluedPoints = gluing.gluedPoints;
   repairs.keptApartPoints = gluing.keptApartPoints;
   repairs.firstKeptApartPoint = gluing.firstKeptApart;
-  return orientTets(prepared, repairs);
+  return orientTets(prepared, repairs, parallelFor);
 }
 
 } // namespace cgmesh

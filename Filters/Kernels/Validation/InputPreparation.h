@@ -13,6 +13,7 @@
 #define cgmesh_InputPreparation_h
 
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 
 #include <string>
@@ -29,8 +30,10 @@ struct InputRepairs
   PointId firstKeptApartPoint = -1; // the lowest of those, or -1
 };
 
-// Fills `prepared` from `input` (left untouched) or fails with a one-line reason.
-Status prepareInput(const TetMesh& input, TetMesh& prepared, InputRepairs& repairs);
+// Fills `prepared` from `input` (left untouched) or fails with a one-line reason. `parallelFor`
+// runs the scans over tets and points; the result does not depend on it.
+Status prepareInput(const TetMesh& input, TetMesh& prepared, InputRepairs& repairs,
+  const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 } // namespace cgmesh
 
