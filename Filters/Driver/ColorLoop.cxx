@@ -44,11 +44,11 @@ struct IterationContext
   std::vector<char>* awaitingImprovement = nullptr;
   // Every interface split the colours before the current one made in this iteration, by edge: a
   // partition heals from it what its processed neighbours split (see postSplitsOfColor).
-  EdgeMidpointMap splitsOfEarlierColors = EdgeMidpointMap();
+  PostedSplits splitsOfEarlierColors = PostedSplits();
 };
 
-TaskReport refineOnePartition(IterationContext& iteration, AdaptationState& state, int partition,
-  const EdgeMidpointMap& received)
+TaskReport refineOnePartition(
+  IterationContext& iteration, AdaptationState& state, int partition, const PostedSplits& received)
 {
   TaskReport report;
   const Stopwatch stopwatch;
@@ -202,14 +202,20 @@ Status numberNewPoints(
 // split goes in once; gathering every processed neighbour's whole outbox into a map per partition
 // instead inserted each split once per neighbour: at 65,536 partitions of 16 tets, most of the
 // healing time.
-void postSplitsOfColor(IterationContext& iteration, const std::vector<int>& members)
+Status postSplitsOfColor(IterationContext& iteration, const std::vector<int>& members)
 {
+  std::vector<const Outbox*> outboxes;
   for (int p : members)
   {
-    Outbox& outbox = iteration.refinements[p].outbox;
-    postSplits(outbox, iteration.splitsOfEarlierColors);
-    outbox = Outbox();
+    outboxes.push_back(&iteration.refinements[p].outbox);
   }
+  const Status status =
+    iteration.splitsOfEarlierColors.post(outboxes, parallelForOn(iteration.setup.threads));
+  for (int p : members)
+  {
+    iteration.refinements[p].outbox = Outbox();
+  }
+  return status;
 }
 
 // The adapt loop of one colour.
@@ -340,8 +346,7 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
     return status;
   }
   reporter.enter(Phase::Heal);
-  postSplitsOfColor(iteration, members);
-  return Status::success();
+  return postSplitsOfColor(iteration, members);
 }
 
 // Refuses an iteration whose forecast size exceeds the guard, before it allocates anything big.

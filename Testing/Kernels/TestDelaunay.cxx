@@ -308,7 +308,7 @@ void test_tampered_tetgen_output_is_refused()
       return failure.empty() && out.neighborlist ? tamper(switches, out) : failure;
     };
     CHECK(refinePartitionDelaunay(
-      partition, context, EdgeMidpointMap(), parameters, runner, refinement, outcome)
+      partition, context, PostedSplits(), parameters, runner, refinement, outcome)
             .ok());
     return outcome;
   };

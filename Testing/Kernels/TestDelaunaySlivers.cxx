@@ -152,7 +152,7 @@ void test_sliver_laden_partition_is_meshed_anew_around_a_cavity()
   DelaunayOutcome outcome;
   const std::size_t inputTets = partition.tets.size();
   CHECK(refinePartitionDelaunay(
-    partition, context, EdgeMidpointMap(), parameters, runner, refinement, outcome)
+    partition, context, PostedSplits(), parameters, runner, refinement, outcome)
           .ok());
   CHECK(outcome.remeshed && !outcome.fellBack);
   CHECK(partition.tets.size() > 2 * inputTets);

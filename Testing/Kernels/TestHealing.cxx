@@ -37,7 +37,7 @@ void processInOrder(ManualRun& run, const std::vector<int>& order, double thresh
   context.squaredThreshold = threshold * threshold;
   context.templates = &run.templates;
   run.refinements.assign(run.partitions.size(), PartitionRefinement());
-  EdgeMidpointMap posted;
+  PostedSplits posted;
   for (int p : order)
   {
     CHECK(refinePartition(run.partitions[p], context, posted, run.refinements[p]).ok());
@@ -48,7 +48,7 @@ void processInOrder(ManualRun& run, const std::vector<int>& order, double thresh
       run.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
     run.newPointSources.insert(run.newPointSources.end(), refinement.newPointSources.begin(),
       refinement.newPointSources.end());
-    postSplits(refinement.outbox, posted);
+    posted.post(refinement.outbox);
   }
 }
 

@@ -92,19 +92,6 @@ struct OutboxEntry
 
 using Outbox = std::vector<OutboxEntry>;
 
-// Adds a processed partition's interface splits, in global ids, to `posted`: the splits the
-// partitions processed after it heal from, looked up by edge. A partition only ever looks up
-// edges it holds, and an edge it shares was split by a neighbour, so one map for all processed
-// partitions serves every later one, with each split in it once.
-inline void postSplits(const Outbox& outbox, EdgeMidpointMap& posted)
-{
-  posted.reserve(posted.size() + outbox.size());
-  for (const OutboxEntry& entry : outbox)
-  {
-    posted.emplace(entry.edge, entry.vertex);
-  }
-}
-
 } // namespace cgmesh
 
 #endif

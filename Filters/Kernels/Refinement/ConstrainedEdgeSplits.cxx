@@ -50,8 +50,8 @@ void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges)
 // face's. The shell's tets then go back in their ancestors' places, so the result is the one of
 // rounds over the whole partition. On the FinFET the rounds go through half as many tets.
 Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, PartitionRefinement& refinement,
-  std::vector<Face>& boundaryFaces, std::vector<Face>& regionInterfaceFaces)
+  const PostedSplits& received, PartitionRefinement& refinement, std::vector<Face>& boundaryFaces,
+  std::vector<Face>& regionInterfaceFaces)
 {
   findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
   EdgeSet constrainedEdges;

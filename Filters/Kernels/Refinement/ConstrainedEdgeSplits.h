@@ -21,8 +21,8 @@ void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges);
 // long), at most eight. Leaves the faces TetGen must keep, as they stand after the last round and
 // each list sorted, in `boundaryFaces` and `regionInterfaceFaces`.
 Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, PartitionRefinement& refinement,
-  std::vector<Face>& boundaryFaces, std::vector<Face>& regionInterfaceFaces);
+  const PostedSplits& received, PartitionRefinement& refinement, std::vector<Face>& boundaryFaces,
+  std::vector<Face>& regionInterfaceFaces);
 
 } // namespace cgmesh
 

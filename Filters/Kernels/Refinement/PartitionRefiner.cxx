@@ -15,8 +15,8 @@ namespace
 class SplitSession
 {
 public:
-  SplitSession(const RefinementContext& context, const EdgeMidpointMap& received,
-    PartitionRefinement& refinement)
+  SplitSession(
+    const RefinementContext& context, const PostedSplits& received, PartitionRefinement& refinement)
     : Context(context)
     , Received(received)
     , Refinement(refinement)
@@ -110,7 +110,7 @@ private:
   }
 
   const RefinementContext& Context;
-  const EdgeMidpointMap& Received;
+  const PostedSplits& Received;
   PartitionRefinement& Refinement;
   EdgeMidpointMap Created;
 };
@@ -240,7 +240,7 @@ std::int64_t predictTemplateTetCount(
 }
 
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, PartitionRefinement& refinement, const EdgeFilter& filter,
+  const PostedSplits& received, PartitionRefinement& refinement, const EdgeFilter& filter,
   std::vector<std::size_t>* origins)
 {
   try

@@ -6,6 +6,7 @@
 
 #include "Core/EdgeSplits.h"
 #include "Core/PartitionMesh.h"
+#include "Core/PostedSplits.h"
 #include "Core/ProvisionalIds.h"
 #include "Core/Status.h"
 #include "Core/Tasks.h"
@@ -80,7 +81,7 @@ Status findInterfaceVertices(const std::vector<PartitionMesh>& partitions, Point
 // provisional ids (see above). Each tet is replaced where it stands, by itself or by its children
 // one after another; with `origins`, each resulting tet's index in the partition before.
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, PartitionRefinement& refinement,
+  const PostedSplits& received, PartitionRefinement& refinement,
   const EdgeFilter& filter = EdgeFilter(), std::vector<std::size_t>* origins = nullptr);
 
 // Rewrites provisional ids of the partition's tets, outbox and new point sources into global ids

@@ -234,8 +234,8 @@ Status remeshPartitionDelaunay(PartitionMesh& partition, const RefinementContext
 }
 
 Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, const DelaunayParameters& parameters,
-  const TetGenRunner& runTetGen, PartitionRefinement& refinement, DelaunayOutcome& outcome)
+  const PostedSplits& received, const DelaunayParameters& parameters, const TetGenRunner& runTetGen,
+  PartitionRefinement& refinement, DelaunayOutcome& outcome)
 {
   if (partition.tets.empty())
   {
@@ -266,7 +266,7 @@ Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext
   EdgeSet frozenEdges;
   addFaceEdges(keptFaces, frozenEdges);
   return refinePartition(
-    partition, context, EdgeMidpointMap(), refinement, EdgeFilter{ &frozenEdges, false });
+    partition, context, PostedSplits(), refinement, EdgeFilter{ &frozenEdges, false });
 }
 
 } // namespace cgmesh

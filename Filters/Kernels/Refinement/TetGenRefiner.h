@@ -84,8 +84,8 @@ struct DelaunayOutcome
 
 // `context.squaredThreshold` must hold the squared interface edge length.
 Status refinePartitionDelaunay(PartitionMesh& partition, const RefinementContext& context,
-  const EdgeMidpointMap& received, const DelaunayParameters& parameters,
-  const TetGenRunner& runTetGen, PartitionRefinement& refinement, DelaunayOutcome& outcome);
+  const PostedSplits& received, const DelaunayParameters& parameters, const TetGenRunner& runTetGen,
+  PartitionRefinement& refinement, DelaunayOutcome& outcome);
 
 // The Delaunay sweep across former interfaces: meshes the partition anew (switch p) from its
 // boundary and material-interface faces as they are (no edge is split, so no neighbour has
