@@ -349,10 +349,34 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
   return postSplitsOfColor(iteration, members);
 }
 
-// Refuses an iteration whose forecast size exceeds the guard, before it allocates anything big.
-Status checkForecastSize(
-  const ColorLoopSetup& setup, const RefinementContext& context, const AdaptationState& state)
+// Room in the point arrays for the points an iteration forecast to make `forecastTets` tets will
+// add (a tet mesh holds about one point per six tets), so that the colours' numbering, which
+// runs on one thread, appends without moving the arrays again and again.
+void reserveForNewPoints(std::int64_t forecastTets, AdaptationState& state)
 {
+  std::int64_t tets = 0;
+  for (const PartitionMesh& partition : state.partitions)
+  {
+    tets += static_cast<std::int64_t>(partition.tets.size());
+  }
+  if (forecastTets <= tets)
+  {
+    return;
+  }
+  const std::size_t points = state.coordinates.size() / 3 + (forecastTets - tets) / 5;
+  state.coordinates.reserve(3 * points);
+  if (!state.sizes.empty())
+  {
+    state.sizes.reserve(points);
+  }
+}
+
+// Refuses an iteration whose forecast size exceeds the guard, before it allocates anything big.
+// Sets `forecastTets` to the forecast, or 0 when there is no guard.
+Status checkForecastSize(const ColorLoopSetup& setup, const RefinementContext& context,
+  const AdaptationState& state, std::int64_t& forecastTets)
+{
+  forecastTets = 0;
   if (!setup.refine || setup.remeshSweep || setup.maximumNumberOfCells <= 0)
   {
     return Status::success();
@@ -397,6 +421,7 @@ Status checkForecastSize(
   {
     total += count;
   }
+  forecastTets = total;
   if (status.ok() && total > setup.maximumNumberOfCells)
   {
     return Status::failure(ErrorKind::SizeLimit,
@@ -488,11 +513,13 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     context.refinement.sizes = state.sizes.empty() ? nullptr : &state.sizes;
     context.refinement.templates = setup.templates;
     context.refinement.orderCornersByCoordinates = setup.orderCornersByCoordinates;
-    Status forecast = checkForecastSize(setup, context.refinement, state);
+    std::int64_t forecastTets = 0;
+    Status forecast = checkForecastSize(setup, context.refinement, state, forecastTets);
     if (!forecast.ok())
     {
       return forecast;
     }
+    reserveForNewPoints(forecastTets, state);
 
     for (int color = 0; color < setup.numberOfColors; ++color)
     {
