@@ -177,6 +177,7 @@ void resolveDistributedOptions(
   const ProcessGroup& group, const TetMesh& piece, AdaptationOptions& options)
 {
   options.orderCornersByCoordinates = true;
+  options.keepBoundaryTriangulation = true; // the pieces' faces against each other stay as they are
   // "Every core" means this process's share of the cores it may run on: processes on one host
   // would otherwise each start a thread per core.
   if (options.numberOfThreads == 0)

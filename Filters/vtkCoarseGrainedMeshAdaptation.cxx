@@ -201,6 +201,7 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter,
 {
   cgmesh::AdaptationOptions options = parameters;
   options.pointProvenance = input->GetPointData()->GetNumberOfArrays() > 0 || withTriangles;
+  options.keepBoundaryTriangulation = withTriangles;
   // The driver calls both hooks on the calling thread only.
   options.progress = [filter](double fraction, const char*)
   {

@@ -79,6 +79,11 @@ struct AdaptationOptions
   // Set when the mesh is one piece of a mesh spread over processes (the filter under MPI): face
   // diagonals then follow coordinates, which the processes sharing a face agree on, not ids.
   bool orderCornersByCoordinates = false;
+  // Set when the boundary's triangulation must stay as given up to refinement: triangles tagged
+  // on boundary faces follow those faces' children, and a piece of a mesh spread over processes
+  // shares its boundary faces with other pieces. Then a sliver-laden input is meshed anew around
+  // its slivers with its boundary faces kept, never as a whole with its boundary re-triangulated.
+  bool keepBoundaryTriangulation = false;
   // Whether the result needs point provenance (the weights that interpolate point data). Without
   // point data there is nothing to interpolate, and the merge skips locating moved points in the
   // input and expanding every new point's recipe.
@@ -191,9 +196,10 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "ones are. Template: children keep their parent's shape, so this does the work on an "
       "eighth of the tets per pass (not with RefinementRegions or RefinementBox, which leave the "
       "other tets as they are). Delaunay: an input with more than 0.1% of its tets under 1 "
-      "degree is first meshed anew around its slivers by TetGen (its boundary and interface "
-      "edges split as refinement splits them), then improved; --no-improve-input refines the "
-      "input as given",
+      "degree is first meshed anew by TetGen as a whole from its boundary and interface faces, "
+      "which TetGen may split (with tagged boundary triangles: around its slivers, its boundary "
+      "and interface edges split as refinement splits them), then improved; --no-improve-input "
+      "refines the input as given",
       &O::improveInput },
     { "NumberOfImprovementPasses", "--improve-passes", "N", K::Integer, 0, 20, 2, "", S::Any,
       "passes of edge removal, face swaps and smoothing per partition in each sweep",

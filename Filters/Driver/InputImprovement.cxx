@@ -4,6 +4,7 @@
 #include "ParallelFor.h"
 #include "Refinement/PartitionRefiner.h"
 #include "RemeshSweep.h"
+#include <cstdlib>
 
 namespace cgmesh
 {
@@ -24,6 +25,43 @@ void returnTetsToPartitions(
     from = PartitionMesh();
   }
   state.partitions = std::move(returned);
+}
+
+// Meshes the whole input anew in one TetGen call (pAMQnq): from its boundary and material
+// interface faces, which TetGen may split as it splits a boundary it meshes on its own, and all
+// its points. Kept triangles are what leaves slivers on such an input: a tet resting on a large
+// kept triangle stays poor whatever TetGen inserts (see docs/design.md, section 5). Afterwards
+// the whole mesh is one partition; `remeshed` says whether TetGen succeeded.
+Status remeshWholeInput(const ColorLoopSetup& setup, const AdaptationOptions& options,
+  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter, bool& remeshed)
+{
+  PartitionMesh whole;
+  for (PartitionMesh& partition : state.partitions)
+  {
+    for (std::size_t t = 0; t < partition.tets.size(); ++t)
+    {
+      appendTetOf(partition, t, whole);
+    }
+    partition = PartitionMesh();
+  }
+  state.partitions.assign(1, std::move(whole));
+  ColorLoopSetup sweep = setup;
+  sweep.refine = true;
+  sweep.remeshSweep = true;
+  sweep.improve = false;
+  sweep.numberOfIterations = 1;
+  sweep.delaunay.shapesOnly = true;
+  sweep.delaunay.keptFacesMaySplit = true;
+  sweep.stage = Stage::ImproveInput;
+  sweep.progressStart = 0;
+  sweep.progressEnd = 0.6;
+  const std::vector<int> oneColor(1, 0);
+  sweep.colorOfPartition = &oneColor;
+  sweep.numberOfColors = 1;
+  const std::int64_t before = summary.inputRemeshedBoxes;
+  const Status status = runColorLoop(sweep, options, state, summary, reporter);
+  remeshed = summary.inputRemeshedBoxes > before;
+  return status;
 }
 
 } // namespace
@@ -52,6 +90,8 @@ Status improveInputBetween(double progressStart, double progressEnd,
   improveOnly.refine = false;
   improveOnly.improve = true;
   improveOnly.improvement.coarsen = false; // sizes are for the refined mesh
+  if (getenv("IN_PASSES"))
+    improveOnly.improvement.passes = atoi(getenv("IN_PASSES"));
   improveOnly.numberOfIterations = 1;
   improveOnly.stage = Stage::ImproveInput;
   improveOnly.progressStart = progressStart;
@@ -101,6 +141,28 @@ Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>
   if (!status.ok() || !sliverLaden)
   {
     return status;
+  }
+  if (!options.keepBoundaryTriangulation)
+  {
+    bool remeshed = false;
+    status = remeshWholeInput(setup, options, state, summary, reporter, remeshed);
+    if (!status.ok() || summary.aborted)
+    {
+      return status;
+    }
+    if (remeshed)
+    {
+      status = returnToInputPartitions(
+        options, partitionOfCell, graph, setup, state, summary, reporter, 0.6);
+      if (!status.ok())
+      {
+        return status;
+      }
+      return improveInputBetween(
+        0.6, 1, options, partitionOfCell, graph, setup, state, summary, reporter);
+    }
+    // TetGen failed on the whole input: its tets went back unchanged; around the slivers below.
+    returnTetsToPartitions(state, partitionOfCell, summary.plan.partitions);
   }
   // The interface rounds first, as refinement makes them: TetGen keeps the boundary and material
   // interface triangles it is given, and tets resting on the input's large ones stay slivers

@@ -236,11 +236,14 @@ void test_sliver_laden_mesh_conforms_across_threads()
   CHECK(sliversAfterSweep < 0.25 * sliversWithout);
 }
 
-// With ImproveInput, a sliver-laden input is meshed anew before it is refined: its interface
-// rounds first, then TetGen on the clusters of its slivers with the radius-edge bound alone, then
-// improvement. Refinement's partitions then hold TetGen's tets, not the input's slivers: fewer of
-// them are meshed anew, and the output is conforming, conserving and the same for any thread
-// count, with no point left over but those the clusters dropped.
+// With ImproveInput, a sliver-laden input is meshed anew before it is refined. Where its boundary
+// may be re-triangulated, as a whole: one TetGen call from its boundary and material interface
+// faces, which TetGen may split, and all its points, so nothing is dropped. Where the boundary
+// triangulation is kept (tagged triangles, pieces across processes): its interface rounds
+// first, then TetGen on the clusters of its slivers, which drop the points the rounds put inside
+// them. Either way, refinement's partitions then hold TetGen's tets, not the input's slivers:
+// fewer of them are meshed anew, and the output is conforming, conserving and the same for any
+// thread count, with no point left over but those the clusters dropped.
 void test_sliver_laden_input_is_meshed_anew_first()
 {
   const TetMesh input = sliverLadenBlock(1500);
@@ -250,28 +253,44 @@ void test_sliver_laden_input_is_meshed_anew_first()
   options.improveQuality = true;
   options.improveInput = false;
   const AdaptationResult refinedAsGiven = run(input, options);
-  options.improveInput = true;
-  const AdaptationResult serial = run(input, options);
-  cgmesh_test::checkValidAndConserving(input, serial.mesh);
-  CHECK(serial.summary.inputRemeshedBoxes > 0 && serial.summary.inputDroppedPoints > 0);
-  CHECK_EQUAL(serial.summary.inputRemeshFailures, std::int64_t(0));
-  CHECK_EQUAL(serial.summary.delaunayFallbacks, std::int64_t(0));
-  CHECK(std::none_of(serial.summary.warnings.begin(), serial.summary.warnings.end(),
-    [](const AdaptationWarning& warning)
-    { return warning.kind == WarningKind::UnusedPointsRemoved; }));
-  CHECK(serial.summary.tetgenRemeshed < refinedAsGiven.summary.tetgenRemeshed);
   CHECK_EQUAL(refinedAsGiven.summary.inputRemeshedBoxes, std::int64_t(0));
-  const double under = shareBelow(serial.mesh.tets, serial.mesh.coordinates, 1.0);
   const double underAsGiven =
     shareBelow(refinedAsGiven.mesh.tets, refinedAsGiven.mesh.coordinates, 1.0);
-  std::cout << "sliver-laden block meshed anew first: " << serial.summary.inputRemeshedBoxes
-            << " clusters (" << serial.summary.inputDroppedPoints << " points dropped), "
-            << serial.summary.tetgenRemeshed << " partitions meshed anew in refinement (against "
-            << refinedAsGiven.summary.tetgenRemeshed << "), share of output tets under 1 degree "
-            << under << " (against " << underAsGiven << ")\n";
-  CHECK(under <= underAsGiven);
-  options.numberOfThreads = 2;
-  CHECK(cgmesh_test::identicalResults(serial, run(input, options)));
+  for (bool keepBoundary : { false, true })
+  {
+    options.improveInput = true;
+    options.keepBoundaryTriangulation = keepBoundary;
+    options.numberOfThreads = 1;
+    const AdaptationResult serial = run(input, options);
+    cgmesh_test::checkValidAndConserving(input, serial.mesh);
+    if (keepBoundary)
+    {
+      CHECK(serial.summary.inputRemeshedBoxes > 0 && serial.summary.inputDroppedPoints > 0);
+    }
+    else
+    {
+      CHECK_EQUAL(serial.summary.inputRemeshedBoxes, std::int64_t(1));
+      CHECK_EQUAL(serial.summary.inputDroppedPoints, std::int64_t(0));
+    }
+    CHECK_EQUAL(serial.summary.inputRemeshFailures, std::int64_t(0));
+    CHECK_EQUAL(serial.summary.delaunayFallbacks, std::int64_t(0));
+    CHECK(std::none_of(serial.summary.warnings.begin(), serial.summary.warnings.end(),
+      [](const AdaptationWarning& warning)
+      { return warning.kind == WarningKind::UnusedPointsRemoved; }));
+    CHECK(serial.summary.tetgenRemeshed < refinedAsGiven.summary.tetgenRemeshed);
+    const double under = shareBelow(serial.mesh.tets, serial.mesh.coordinates, 1.0);
+    std::cout << "sliver-laden block meshed anew first"
+              << (keepBoundary ? " around its slivers, boundary kept: " : " as a whole: ")
+              << serial.summary.inputRemeshedBoxes << " boxes ("
+              << serial.summary.inputDroppedPoints << " points dropped), "
+              << serial.summary.tetgenRemeshed << " partitions meshed anew in refinement (against "
+              << refinedAsGiven.summary.tetgenRemeshed << "), " << serial.mesh.tets.size()
+              << " tets, share of output tets under 1 degree " << under << " (against "
+              << underAsGiven << ")\n";
+    CHECK(under <= underAsGiven);
+    options.numberOfThreads = 2;
+    CHECK(cgmesh_test::identicalResults(serial, run(input, options)));
+  }
 }
 
 // The sweep's kernel: a partition meshed anew from its kept faces drops exactly its interior

@@ -24,11 +24,11 @@ std::string tetgenSwitches(
   const DelaunayParameters& parameters, bool qualityBound, bool sizeField, bool remesh)
 {
   // r: refine the given mesh, or p: mesh the kept faces and the points anew, with A: the region
-  // attributes from the region list; Y: keep the given boundary and interface faces; M: do not
-  // merge coplanar facets; Q: quiet; n: return the face neighbours (for validation); q: the
-  // radius-edge bound, when asked; a: the volume bound, when there is one; m: the sizes given
-  // per point, with a size field.
-  std::string switches = remesh ? "pAYMQn" : "rYMQn";
+  // attributes from the region list; Y: keep the given boundary and interface faces (unless they
+  // may split); M: do not merge coplanar facets; Q: quiet; n: return the face neighbours (for
+  // validation); q: the radius-edge bound, when asked; a: the volume bound, when there is one; m:
+  // the sizes given per point, with a size field.
+  std::string switches = remesh ? (parameters.keptFacesMaySplit ? "pAMQn" : "pAYMQn") : "rYMQn";
   char bound[64];
   if (qualityBound)
   {
@@ -102,7 +102,7 @@ std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMes
       runTetGen(in, tetgenSwitches(parameters, attempt.qualityBound, sizeField, remesh), out);
     if (failure.empty())
     {
-      failure = session.validate(in, out);
+      failure = session.validate(in, out, remesh && parameters.keptFacesMaySplit);
     }
     if (failure.empty())
     {

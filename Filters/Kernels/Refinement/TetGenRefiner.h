@@ -29,6 +29,10 @@ struct DelaunayParameters
   // bound nor the sizes.
   bool constrainedEdgesOnly = false;
   bool shapesOnly = false;
+  // Meshing anew only: TetGen may split the kept faces (no switch Y), as it splits a boundary it
+  // meshes on its own. Only for a partition that holds the whole mesh, whose kept faces are the
+  // domain boundary and the material interfaces alone, shared with no other partition.
+  bool keptFacesMaySplit = false;
 };
 
 // The edge length up to which templates refine interfaces for a volume bound: the edge of the

@@ -81,6 +81,25 @@ bool keptFacesOfOutput(const tetgenio& io, std::vector<std::array<int, 3>>& kept
   return true;
 }
 
+// Whether two sets of faces (corner indices into the output's points) cover the same area, to
+// 1e-9 relative: split kept faces still cover what was kept, region volumes being checked too.
+bool sameArea(const tetgenio& io, const std::vector<std::array<int, 3>>& faces,
+  const std::vector<std::array<int, 3>>& others)
+{
+  auto total = [&](const std::vector<std::array<int, 3>>& list)
+  {
+    double area = 0;
+    for (const auto& face : list)
+    {
+      area += triangleArea(
+        io.pointlist + 3 * face[0], io.pointlist + 3 * face[1], io.pointlist + 3 * face[2]);
+    }
+    return area;
+  };
+  const double expected = total(others);
+  return std::abs(total(faces) - expected) <= 1e-9 * expected;
+}
+
 } // namespace
 
 void TetGenSession::prepareInput(tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order,
@@ -328,7 +347,8 @@ std::map<int, double> TetGenSession::regionVolumesOfOutput(const tetgenio& out) 
   return volumes;
 }
 
-std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) const
+std::string TetGenSession::validate(
+  const tetgenio& in, const tetgenio& out, bool keptFacesMaySplit) const
 {
   if (out.numberofpoints < in.numberofpoints || out.numberoftetrahedra < 1 ||
     out.numberofcorners != 4 || out.numberoftetrahedronattributes < 1 || out.firstnumber != 0)
@@ -391,7 +411,8 @@ std::string TetGenSession::validate(const tetgenio& in, const tetgenio& out) con
   {
     return "TetGen returned inconsistent face neighbours";
   }
-  if (keptInOutput != this->KeptFaces)
+  if (keptFacesMaySplit ? !sameArea(out, keptInOutput, this->KeptFaces)
+                        : keptInOutput != this->KeptFaces)
   {
     return "TetGen changed the partition boundary or a material interface";
   }

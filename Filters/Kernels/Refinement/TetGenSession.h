@@ -99,7 +99,9 @@ public:
 
   // Checks what TetGen returned: input points kept in place, positive tets, the same boundary
   // and region interfaces, the same volume per region. Empty when valid.
-  std::string validate(const tetgenio& in, const tetgenio& out) const;
+  // With `keptFacesMaySplit`, the kept faces may come back split: then their total area, not the
+  // faces themselves, must be what was given.
+  std::string validate(const tetgenio& in, const tetgenio& out, bool keptFacesMaySplit) const;
 
   // The partition's points TetGen meshed without.
   std::int64_t droppedPoints() const
