@@ -4,7 +4,6 @@
 #include "ParallelFor.h"
 #include "Refinement/PartitionRefiner.h"
 #include "RemeshSweep.h"
-#include <cstdlib>
 
 namespace cgmesh
 {
@@ -90,8 +89,6 @@ Status improveInputBetween(double progressStart, double progressEnd,
   improveOnly.refine = false;
   improveOnly.improve = true;
   improveOnly.improvement.coarsen = false; // sizes are for the refined mesh
-  if (getenv("IN_PASSES"))
-    improveOnly.improvement.passes = atoi(getenv("IN_PASSES"));
   improveOnly.numberOfIterations = 1;
   improveOnly.stage = Stage::ImproveInput;
   improveOnly.progressStart = progressStart;
