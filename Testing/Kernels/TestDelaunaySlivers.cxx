@@ -1,7 +1,8 @@
 // Delaunay refinement of sliver-laden meshes: a partition full of slivers meshed anew around a
 // cavity, the whole method on a sliver-laden two-material block (conforming, conserving, the same
 // for any thread count, with and without the sweep across former interfaces, and with the input
-// meshed anew first), and the sweep's kernel dropping only the interior points refinement made.
+// meshed anew first), the whole mesh meshed anew with its boundary free, and the sweep's kernel
+// dropping only the interior points refinement made.
 #include "AdaptationDriver.h"
 #include "Core/Geometry.h"
 #include "Core/TetQuality.h"
@@ -293,6 +294,148 @@ void test_sliver_laden_input_is_meshed_anew_first()
   }
 }
 
+// The whole mesh meshed anew with its kept faces free to split (a sliver-laden input without
+// tagged triangles): TetGen is called without Y, splits boundary faces, and the result keeps
+// every region's volume and the boundary's area. A result whose new boundary point has left the
+// surface is refused, and the mesh stays as it was.
+void test_whole_mesh_meshed_anew_with_its_boundary_free()
+{
+  const TetMesh mesh = sliverLadenBlock(1500);
+  PartitionMesh whole;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    whole.tets.push_back(mesh.tets[t]);
+    whole.regions.push_back(mesh.regions[t]);
+    whole.parentCells.push_back(t);
+  }
+  DelaunayParameters parameters{ 0, 2.0, false };
+  parameters.shapesOnly = true;
+  parameters.keptFacesMaySplit = true;
+  const PartitionSetting setting(mesh, parameters);
+  TetGenWorkerPool pool(1);
+  const TetGenRunner runner = [&pool](
+                                const tetgenio& in, const std::string& switches, tetgenio& out)
+  {
+    CHECK(switches.rfind("pA", 0) == 0 && switches.find('Y') == std::string::npos);
+    return pool.run(0, in, switches, out);
+  };
+  // The faces of one tet only (the boundary) and between regions, with their area.
+  auto keptArea = [](const TetList& tets, const std::vector<int>& regions,
+                    const std::vector<double>& xyz, std::size_t& pointsOffInput,
+                    PointId inputPoints)
+  {
+    std::map<std::array<PointId, 3>, std::vector<std::size_t>> tetsOfFace;
+    for (std::size_t t = 0; t < tets.size(); ++t)
+    {
+      for (int skip = 0; skip < 4; ++skip)
+      {
+        std::array<PointId, 3> face;
+        for (int k = 0, n = 0; k < 4; ++k)
+        {
+          if (k != skip)
+          {
+            face[n++] = tets[t][k];
+          }
+        }
+        std::sort(face.begin(), face.end());
+        tetsOfFace[face].push_back(t);
+      }
+    }
+    double area = 0;
+    pointsOffInput = 0;
+    for (const auto& [face, owners] : tetsOfFace)
+    {
+      if (owners.size() == 1 || regions[owners[0]] != regions[owners[1]])
+      {
+        area += triangleArea(
+          xyz.data() + 3 * face[0], xyz.data() + 3 * face[1], xyz.data() + 3 * face[2]);
+        pointsOffInput += face[2] >= inputPoints ? 1 : 0; // a face with a point TetGen added
+      }
+    }
+    return area;
+  };
+  std::size_t facesWithNewPoints = 0;
+  const double areaBefore =
+    keptArea(mesh.tets, mesh.regions, mesh.coordinates, facesWithNewPoints, mesh.numberOfPoints());
+
+  PartitionRefinement refinement;
+  DelaunayOutcome outcome;
+  PartitionMesh remeshed = whole;
+  CHECK(remeshPartitionDelaunay(
+    remeshed, setting.context, parameters, mesh.numberOfPoints(), runner, refinement, outcome)
+          .ok());
+  CHECK(outcome.remeshed && !outcome.fellBack);
+  CHECK_EQUAL(outcome.droppedPoints, std::int64_t(0));
+  std::vector<double> coordinates = mesh.coordinates;
+  coordinates.insert(
+    coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
+  TetList tets;
+  std::map<int, double> before, after;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    before[mesh.regions[t]] += signedVolume6(mesh, mesh.tets[t]) / 6.0;
+  }
+  for (std::size_t t = 0; t < remeshed.tets.size(); ++t)
+  {
+    Tet tet;
+    for (int k = 0; k < 4; ++k)
+    {
+      const PointId p = remeshed.tets[t][k];
+      tet[k] = p >= 0 ? p : mesh.numberOfPoints() - p - 1;
+    }
+    const double volume =
+      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]);
+    CHECK(volume > 0);
+    after[remeshed.regions[t]] += volume / 6.0;
+    tets.push_back(tet);
+  }
+  CHECK_EQUAL(after.size(), before.size());
+  for (const auto& region : before)
+  {
+    CHECK_CLOSE(after[region.first], region.second, 1e-12);
+  }
+  const double areaAfter =
+    keptArea(tets, remeshed.regions, coordinates, facesWithNewPoints, mesh.numberOfPoints());
+  CHECK_CLOSE(areaAfter, areaBefore, 1e-9 * areaBefore);
+  std::cout << "whole block meshed anew, boundary free: " << mesh.tets.size() << " tets to "
+            << tets.size() << ", " << facesWithNewPoints
+            << " boundary and interface faces with a point TetGen added\n";
+  CHECK(facesWithNewPoints > 0); // TetGen did split kept faces
+
+  // The same call, its first new point on a kept face pushed off it.
+  const TetGenRunner pushing = [&pool](
+                                 const tetgenio& in, const std::string& switches, tetgenio& out)
+  {
+    const std::string failure = pool.run(0, in, switches, out);
+    for (int t = 0; failure.empty() && t < out.numberoftetrahedra; ++t)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int p = out.tetrahedronlist[4 * t + k];
+        if (out.neighborlist[4 * t + (k + 1) % 4] == -1 && p >= in.numberofpoints)
+        {
+          for (int axis = 0; axis < 3; ++axis)
+          {
+            out.pointlist[3 * p + axis] *= 1.01;
+          }
+          return failure;
+        }
+      }
+    }
+    return failure;
+  };
+  PartitionRefinement pushedRefinement;
+  DelaunayOutcome pushedOutcome;
+  PartitionMesh pushed = whole;
+  CHECK(remeshPartitionDelaunay(pushed, setting.context, parameters, mesh.numberOfPoints(), pushing,
+    pushedRefinement, pushedOutcome)
+          .ok());
+  CHECK(pushedOutcome.fellBack && !pushedOutcome.remeshed);
+  CHECK(pushedOutcome.reason.rfind("TetGen changed", 0) == 0);
+  CHECK(pushed.tets == whole.tets && pushedRefinement.newCoordinates.empty());
+}
+
 // The sweep's kernel: a partition meshed anew from its kept faces drops exactly its interior
 // points from `firstDroppablePoint` on, keeps every other point, its region volumes and the cavity
 // of other partitions it encloses.
@@ -418,6 +561,7 @@ int main()
   test_sliver_laden_partition_is_meshed_anew_around_a_cavity();
   test_sliver_laden_mesh_conforms_across_threads();
   test_sliver_laden_input_is_meshed_anew_first();
+  test_whole_mesh_meshed_anew_with_its_boundary_free();
   test_sweep_box_drops_only_interior_points_refinement_made();
   return cgmesh_test::finish("TestDelaunaySlivers");
 }
