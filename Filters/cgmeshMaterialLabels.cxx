@@ -86,24 +86,32 @@ Status combineMaterialLabels(
     }
   };
   // Ranges of cells run concurrently. Neighbouring cells mostly belong to one material, so each
-  // range looks a combination up only where it changes. Two passes: the combinations first
-  // (numbered in sorted order), then each cell's number.
+  // range handles its runs of cells with the same combination, one look-up per run. Two passes:
+  // the combinations first (numbered in sorted order), then each cell's number.
   const std::int64_t rangeSize = IndicesPerCopyRange;
-  const std::int64_t ranges = (cells + rangeSize - 1) / rangeSize;
-  std::vector<std::set<Combination>> combinationsOfRange(ranges);
-  Status status = forEachRange(parallelForOn(resolveThreadCount(threads)), cells, rangeSize,
+  const ParallelFor parallelFor = parallelForOn(resolveThreadCount(threads));
+  auto forEachRun = [&](std::int64_t begin, std::int64_t end, auto&& visit)
+  {
+    Combination values(arrays.size()), next(arrays.size());
+    for (vtkIdType first = begin; first < end;)
+    {
+      readValues(first, values);
+      vtkIdType last = first + 1;
+      while (last < end && (readValues(last, next), next == values))
+      {
+        ++last;
+      }
+      visit(values, first, last);
+      first = last;
+    }
+  };
+  std::vector<std::set<Combination>> combinationsOfRange((cells + rangeSize - 1) / rangeSize);
+  Status status = forEachRange(parallelFor, cells, rangeSize,
     [&](std::int64_t begin, std::int64_t end)
     {
-      Combination values(arrays.size()), last;
-      for (vtkIdType cell = begin; cell < end; ++cell)
-      {
-        readValues(cell, values);
-        if (cell == begin || values != last)
-        {
-          combinationsOfRange[begin / rangeSize].insert(values);
-          last = values;
-        }
-      }
+      forEachRun(begin, end,
+        [&](const Combination& values, vtkIdType, vtkIdType)
+        { combinationsOfRange[begin / rangeSize].insert(values); });
     });
   if (!status.ok())
   {
@@ -123,21 +131,12 @@ Status combineMaterialLabels(
     entry.second = next++;
   }
   mesh.regions.resize(static_cast<std::size_t>(cells));
-  return forEachRange(parallelForOn(resolveThreadCount(threads)), cells, rangeSize,
+  return forEachRange(parallelFor, cells, rangeSize,
     [&](std::int64_t begin, std::int64_t end)
     {
-      Combination values(arrays.size()), last;
-      int id = 0;
-      for (vtkIdType cell = begin; cell < end; ++cell)
-      {
-        readValues(cell, values);
-        if (cell == begin || values != last)
-        {
-          id = idOf.at(values);
-          last = values;
-        }
-        mesh.regions[cell] = id;
-      }
+      forEachRun(begin, end,
+        [&](const Combination& values, vtkIdType first, vtkIdType last)
+        { std::fill(mesh.regions.begin() + first, mesh.regions.begin() + last, idOf.at(values)); });
     });
 }
 

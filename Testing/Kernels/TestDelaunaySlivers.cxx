@@ -117,6 +117,72 @@ PartitionMesh partitionAroundCavity(const TetMesh& mesh)
   return partition;
 }
 
+// The kept faces of `tets` (corners sorted): faces of one tet, and faces between two regions.
+std::vector<std::array<PointId, 3>> keptFacesOf(
+  const TetList& tets, const std::vector<int>& regions)
+{
+  std::map<std::array<PointId, 3>, std::vector<std::size_t>> tetsOfFace;
+  for (std::size_t t = 0; t < tets.size(); ++t)
+  {
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      std::array<PointId, 3> face;
+      for (int k = 0, n = 0; k < 4; ++k)
+      {
+        if (k != skip)
+        {
+          face[n++] = tets[t][k];
+        }
+      }
+      std::sort(face.begin(), face.end());
+      tetsOfFace[face].push_back(t);
+    }
+  }
+  std::vector<std::array<PointId, 3>> kept;
+  for (const auto& [face, owners] : tetsOfFace)
+  {
+    if (owners.size() == 1 || regions[owners[0]] != regions[owners[1]])
+    {
+      kept.push_back(face);
+    }
+  }
+  return kept;
+}
+
+// A partition TetGen gave back, in global ids over the mesh's points followed by the new ones,
+// with its volume per region; checks that every tet is positive.
+struct GlobalPartition
+{
+  std::vector<double> coordinates;
+  TetList tets;
+  std::map<int, double> volumeOfRegion;
+};
+
+GlobalPartition inGlobalIds(
+  const TetMesh& mesh, const PartitionMesh& partition, const PartitionRefinement& refinement)
+{
+  GlobalPartition global;
+  global.coordinates = mesh.coordinates;
+  global.coordinates.insert(
+    global.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
+  const double* xyz = global.coordinates.data();
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    Tet tet;
+    for (int k = 0; k < 4; ++k)
+    {
+      const PointId p = partition.tets[t][k];
+      tet[k] = p >= 0 ? p : mesh.numberOfPoints() - p - 1;
+    }
+    const double volume =
+      signedVolume6(xyz + 3 * tet[0], xyz + 3 * tet[1], xyz + 3 * tet[2], xyz + 3 * tet[3]);
+    CHECK(volume > 0);
+    global.volumeOfRegion[partition.regions[t]] += volume / 6.0;
+    global.tets.push_back(tet);
+  }
+  return global;
+}
+
 // A TetGen runner in one worker that checks each call meshes anew (switches starting pA).
 TetGenRunner remeshingRunner(TetGenWorkerPool& pool)
 {
@@ -159,41 +225,25 @@ void test_sliver_laden_partition_is_meshed_anew_around_a_cavity()
   CHECK(partition.tets.size() > 2 * inputTets);
 
   // Every point is the input's or one TetGen inserted and a tet uses; the cavity stays empty.
-  std::vector<double> coordinates = mesh.coordinates;
-  coordinates.insert(
-    coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
-  const auto globalOf = [&mesh](PointId p)
+  GlobalPartition global = inGlobalIds(mesh, partition, refinement);
+  std::vector<char> used(global.coordinates.size() / 3, 0);
+  for (const Tet& tet : global.tets)
   {
-    return p >= 0 ? p : mesh.numberOfPoints() - p - 1;
-  };
-  std::vector<char> used(coordinates.size() / 3, 0);
-  std::map<int, double> volumeAfter;
-  TetList tets;
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
-  {
-    Tet tet;
-    for (int k = 0; k < 4; ++k)
+    for (PointId p : tet)
     {
-      tet[k] = globalOf(partition.tets[t][k]);
-      used[tet[k]] = 1;
+      used[p] = 1;
     }
-    const double volume =
-      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
-        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]);
-    CHECK(volume > 0);
-    volumeAfter[partition.regions[t]] += volume / 6.0;
-    tets.push_back(tet);
   }
   CHECK(std::count(used.begin() + mesh.numberOfPoints(), used.end(), 0) == 0);
   CHECK_EQUAL(refinement.newPointSources.size(), refinement.newCoordinates.size() / 3);
-  CHECK_EQUAL(volumeAfter.size(), volumeOfRegion.size());
+  CHECK_EQUAL(global.volumeOfRegion.size(), volumeOfRegion.size());
   for (const auto& region : volumeOfRegion)
   {
-    CHECK_CLOSE(volumeAfter[region.first], region.second, 1e-12);
+    CHECK_CLOSE(global.volumeOfRegion[region.first], region.second, 1e-12);
   }
   // Meshed anew, the partition holds far fewer slivers than it was given.
   const double before = shareBelow(mesh.tets, mesh.coordinates, RemeshSliverDegrees);
-  const double after = shareBelow(tets, coordinates, RemeshSliverDegrees);
+  const double after = shareBelow(global.tets, global.coordinates, RemeshSliverDegrees);
   std::cout << "share of tets under " << RemeshSliverDegrees << " degrees: " << before
             << " before, " << after << " after\n";
   CHECK(after < 0.25 * before);
@@ -319,44 +369,22 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
     CHECK(switches.rfind("pA", 0) == 0 && switches.find('Y') == std::string::npos);
     return pool.run(0, in, switches, out);
   };
-  // The faces of one tet only (the boundary) and between regions, with their area.
-  auto keptArea = [](const TetList& tets, const std::vector<int>& regions,
-                    const std::vector<double>& xyz, std::size_t& pointsOffInput,
-                    PointId inputPoints)
+  // The area of the kept faces, and how many of them have a corner TetGen added.
+  auto keptArea = [&mesh](const TetList& tets, const std::vector<int>& regions,
+                    const std::vector<double>& xyz, std::size_t& facesWithNewPoints)
   {
-    std::map<std::array<PointId, 3>, std::vector<std::size_t>> tetsOfFace;
-    for (std::size_t t = 0; t < tets.size(); ++t)
-    {
-      for (int skip = 0; skip < 4; ++skip)
-      {
-        std::array<PointId, 3> face;
-        for (int k = 0, n = 0; k < 4; ++k)
-        {
-          if (k != skip)
-          {
-            face[n++] = tets[t][k];
-          }
-        }
-        std::sort(face.begin(), face.end());
-        tetsOfFace[face].push_back(t);
-      }
-    }
     double area = 0;
-    pointsOffInput = 0;
-    for (const auto& [face, owners] : tetsOfFace)
+    facesWithNewPoints = 0;
+    for (const auto& face : keptFacesOf(tets, regions))
     {
-      if (owners.size() == 1 || regions[owners[0]] != regions[owners[1]])
-      {
-        area += triangleArea(
-          xyz.data() + 3 * face[0], xyz.data() + 3 * face[1], xyz.data() + 3 * face[2]);
-        pointsOffInput += face[2] >= inputPoints ? 1 : 0; // a face with a point TetGen added
-      }
+      area +=
+        triangleArea(xyz.data() + 3 * face[0], xyz.data() + 3 * face[1], xyz.data() + 3 * face[2]);
+      facesWithNewPoints += face[2] >= mesh.numberOfPoints() ? 1 : 0;
     }
     return area;
   };
   std::size_t facesWithNewPoints = 0;
-  const double areaBefore =
-    keptArea(mesh.tets, mesh.regions, mesh.coordinates, facesWithNewPoints, mesh.numberOfPoints());
+  const double areaBefore = keptArea(mesh.tets, mesh.regions, mesh.coordinates, facesWithNewPoints);
 
   PartitionRefinement refinement;
   DelaunayOutcome outcome;
@@ -366,40 +394,22 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
           .ok());
   CHECK(outcome.remeshed && !outcome.fellBack);
   CHECK_EQUAL(outcome.droppedPoints, std::int64_t(0));
-  std::vector<double> coordinates = mesh.coordinates;
-  coordinates.insert(
-    coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
-  TetList tets;
-  std::map<int, double> before, after;
+  std::map<int, double> before;
   for (CellId t = 0; t < mesh.numberOfTets(); ++t)
   {
     before[mesh.regions[t]] += signedVolume6(mesh, mesh.tets[t]) / 6.0;
   }
-  for (std::size_t t = 0; t < remeshed.tets.size(); ++t)
-  {
-    Tet tet;
-    for (int k = 0; k < 4; ++k)
-    {
-      const PointId p = remeshed.tets[t][k];
-      tet[k] = p >= 0 ? p : mesh.numberOfPoints() - p - 1;
-    }
-    const double volume =
-      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
-        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]);
-    CHECK(volume > 0);
-    after[remeshed.regions[t]] += volume / 6.0;
-    tets.push_back(tet);
-  }
-  CHECK_EQUAL(after.size(), before.size());
+  GlobalPartition global = inGlobalIds(mesh, remeshed, refinement);
+  CHECK_EQUAL(global.volumeOfRegion.size(), before.size());
   for (const auto& region : before)
   {
-    CHECK_CLOSE(after[region.first], region.second, 1e-12);
+    CHECK_CLOSE(global.volumeOfRegion[region.first], region.second, 1e-12);
   }
   const double areaAfter =
-    keptArea(tets, remeshed.regions, coordinates, facesWithNewPoints, mesh.numberOfPoints());
+    keptArea(global.tets, remeshed.regions, global.coordinates, facesWithNewPoints);
   CHECK_CLOSE(areaAfter, areaBefore, 1e-9 * areaBefore);
   std::cout << "whole block meshed anew, boundary free: " << mesh.tets.size() << " tets to "
-            << tets.size() << ", " << facesWithNewPoints
+            << global.tets.size() << ", " << facesWithNewPoints
             << " boundary and interface faces with a point TetGen added\n";
   CHECK(facesWithNewPoints > 0); // TetGen did split kept faces
 
@@ -445,33 +455,12 @@ void test_sweep_box_drops_only_interior_points_refinement_made()
   const PartitionMesh partition = partitionAroundCavity(mesh);
   // The points of kept faces, found here on their own: faces of one tet of the partition, or of
   // two tets of different regions.
-  std::map<std::array<PointId, 3>, std::vector<std::size_t>> tetsOfFace;
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
-  {
-    for (int skip = 0; skip < 4; ++skip)
-    {
-      std::array<PointId, 3> face;
-      for (int k = 0, n = 0; k < 4; ++k)
-      {
-        if (k != skip)
-        {
-          face[n++] = partition.tets[t][k];
-        }
-      }
-      std::sort(face.begin(), face.end());
-      tetsOfFace[face].push_back(t);
-    }
-  }
   std::vector<char> onKeptFace(mesh.numberOfPoints(), 0), inPartition(mesh.numberOfPoints(), 0);
-  for (const auto& entry : tetsOfFace)
+  for (const auto& face : keptFacesOf(partition.tets, partition.regions))
   {
-    const std::vector<std::size_t>& owners = entry.second;
-    if (owners.size() == 1 || partition.regions[owners[0]] != partition.regions[owners[1]])
+    for (PointId p : face)
     {
-      for (PointId p : entry.first)
-      {
-        onKeptFace[p] = 1;
-      }
+      onKeptFace[p] = 1;
     }
   }
   for (const Tet& tet : partition.tets)
@@ -503,42 +492,32 @@ void test_sweep_box_drops_only_interior_points_refinement_made()
   CHECK_EQUAL(outcome.droppedPoints, droppable);
   CHECK(refinement.newPointSources.empty() || outcome.tetgenPoints > 0);
 
-  std::vector<char> usedAfter(mesh.numberOfPoints(), 0);
-  std::map<int, double> before, after;
+  std::map<int, double> before;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     before[partition.regions[t]] += signedVolume6(mesh, partition.tets[t]) / 6.0;
   }
-  std::vector<double> coordinates = mesh.coordinates;
-  coordinates.insert(
-    coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
-  for (std::size_t t = 0; t < remeshed.tets.size(); ++t)
+  GlobalPartition global = inGlobalIds(mesh, remeshed, refinement);
+  std::vector<char> usedAfter(mesh.numberOfPoints(), 0);
+  for (const Tet& tet : global.tets)
   {
-    Tet tet;
-    for (int k = 0; k < 4; ++k)
+    for (PointId p : tet)
     {
-      const PointId p = remeshed.tets[t][k];
-      tet[k] = p >= 0 ? p : mesh.numberOfPoints() - p - 1;
-      if (p >= 0)
+      if (p < mesh.numberOfPoints())
       {
         usedAfter[p] = 1;
       }
     }
-    const double volume =
-      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
-        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]);
-    CHECK(volume > 0);
-    after[remeshed.regions[t]] += volume / 6.0;
   }
   for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
   {
     const bool dropped = p >= firstDroppable && inPartition[p] && !onKeptFace[p];
     CHECK_EQUAL(static_cast<int>(usedAfter[p]), static_cast<int>(inPartition[p] && !dropped));
   }
-  CHECK_EQUAL(after.size(), before.size());
+  CHECK_EQUAL(global.volumeOfRegion.size(), before.size());
   for (const auto& region : before)
   {
-    CHECK_CLOSE(after[region.first], region.second, 1e-12);
+    CHECK_CLOSE(global.volumeOfRegion[region.first], region.second, 1e-12);
   }
 
   // A failed call leaves the partition as it was.

@@ -130,7 +130,12 @@ bool Improver::isFixed(int v)
   {
     table.assign(capacity, LinkEdge());
   }
-  const unsigned call = ++this->LinkEdgeCall;
+  if (++this->LinkEdgeCall == 0) // wrapped: no old slot may look filled
+  {
+    std::fill(table.begin(), table.end(), LinkEdge());
+    this->LinkEdgeCall = 1;
+  }
+  const unsigned call = this->LinkEdgeCall;
   const std::size_t mask = capacity - 1;
   bool fixed = false;
   int metOnce = 0;
