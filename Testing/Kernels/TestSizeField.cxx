@@ -16,7 +16,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <set>
+#include <utility>
 
 using namespace cgmesh;
 
@@ -114,6 +117,69 @@ void test_refinement_to_a_graded_field()
     CHECK(adaptMesh(input, options, parallel).ok());
     CHECK(cgmesh_test::identicalResults(serial, parallel));
     CHECK(parallel.mesh.sizes == serial.mesh.sizes);
+  }
+}
+
+// The edge measure counts every edge of the mesh once, whatever the schedule of its ranges: on
+// the graded cube refined and coarsened (irregular valences), against a set of all edges, with
+// some points outside the field (infinite size), whose edges do not count.
+void test_edge_measure_counts_every_edge_once()
+{
+  const TetMesh input = gradedCube(5);
+  AdaptationOptions options;
+  options.numberOfIterations = 12;
+  options.numberOfPartitions = 16;
+  AdaptationResult refined;
+  CHECK(adaptMesh(input, options, refined).ok());
+  TetMesh mesh = refined.mesh;
+  for (PointId p = 0; p < mesh.numberOfPoints(); p += 7)
+  {
+    mesh.sizes[p] = std::numeric_limits<double>::infinity();
+  }
+
+  std::set<std::pair<PointId, PointId>> edges;
+  for (const Tet& tet : mesh.tets)
+  {
+    for (const auto& corners : TetEdgeCorners)
+    {
+      edges.insert(std::minmax(tet[corners[0]], tet[corners[1]]));
+    }
+  }
+  EdgeSizeReport expected;
+  std::int64_t within = 0;
+  for (const auto& [a, b] : edges)
+  {
+    if (!std::isfinite(mesh.sizes[a]) || !std::isfinite(mesh.sizes[b]))
+    {
+      continue;
+    }
+    const double ratio =
+      std::sqrt(squaredEdgeLength(mesh, a, b)) / (0.5 * (mesh.sizes[a] + mesh.sizes[b]));
+    const double bounds[5] = { 0.5, std::sqrt(0.5), 1.0, std::sqrt(2.0), 2.0 };
+    ++expected.histogram[std::upper_bound(bounds, bounds + 5, ratio) - bounds];
+    ++expected.edges;
+    within += ratio >= bounds[1] * (1 - 1e-12) && ratio <= bounds[3] * (1 + 1e-12);
+  }
+  CHECK(expected.edges > 10000 && expected.edges < static_cast<std::int64_t>(edges.size()));
+
+  // In order, and with the ranges taken last to first.
+  const ParallelFor backwards = [](
+                                  std::int64_t count, const std::function<void(std::int64_t)>& body)
+  {
+    for (std::int64_t i = count - 1; i >= 0; --i)
+    {
+      body(i);
+    }
+    return Status::success();
+  };
+  for (const ParallelFor& parallelFor : { ParallelFor(runSerially), backwards })
+  {
+    EdgeSizeReport measured;
+    CHECK(measureEdgeSizes(mesh, parallelFor, measured).ok());
+    CHECK_EQUAL(measured.edges, expected.edges);
+    CHECK(measured.histogram == expected.histogram);
+    CHECK_EQUAL(measured.shareWithinBounds,
+      static_cast<double>(within) / static_cast<double>(expected.edges));
   }
 }
 
@@ -398,6 +464,7 @@ int main()
 {
   test_gradation_limits_neighbouring_sizes();
   test_refinement_to_a_graded_field();
+  test_edge_measure_counts_every_edge_once();
   test_delaunay_refinement_to_a_graded_field();
   test_coarsening_where_the_field_is_coarse();
   test_bad_size_fields_are_refused();

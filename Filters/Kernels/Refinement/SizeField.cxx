@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -78,8 +79,114 @@ std::vector<std::pair<PointId, PointId>> uniqueEdges(const TetMesh& mesh)
   return edges;
 }
 
-// Points per task of the edge measurement: each looks at about 24 tets.
+// Points per task of the edge measurement: each reads about 35 higher ends.
 constexpr std::int64_t PointsPerMeasuringRange = 8192;
+
+// The edges of a mesh by their lower end: the higher ends met from point p are
+// ends[offsets[p]] to ends[offsets[p + 1] - 1], an edge once per tet that holds it. Two walks over
+// the tets in order fill it; measuring then reads each point's ends in order. Gathering the tets
+// around each point instead cost a cache miss per tet: the merge phase, which holds the
+// measurement, took 0.34 s instead of 0.43 on the graded Big cube (1.7 M tets, 2 threads) and
+// 1.2 s instead of 1.47 on the FinFET with its size field (5.9 M tets).
+template <typename End>
+struct HigherEnds
+{
+  std::vector<std::int64_t> offsets;
+  std::vector<End> ends;
+};
+
+template <typename End>
+HigherEnds<End> higherEnds(const TetMesh& mesh)
+{
+  const std::size_t pointCount = static_cast<std::size_t>(mesh.numberOfPoints());
+  HigherEnds<End> edges;
+  edges.offsets.assign(pointCount + 1, 0);
+  for (const Tet& tet : mesh.tets)
+  {
+    for (const auto& corners : TetEdgeCorners)
+    {
+      ++edges.offsets[std::min(tet[corners[0]], tet[corners[1]]) + 1];
+    }
+  }
+  for (std::size_t p = 0; p < pointCount; ++p)
+  {
+    edges.offsets[p + 1] += edges.offsets[p];
+  }
+  edges.ends.resize(edges.offsets.back());
+  std::vector<std::int64_t> fill(edges.offsets.begin(), edges.offsets.end() - 1);
+  for (const Tet& tet : mesh.tets)
+  {
+    for (const auto& corners : TetEdgeCorners)
+    {
+      const PointId a = tet[corners[0]], b = tet[corners[1]];
+      edges.ends[fill[std::min(a, b)]++] = static_cast<End>(std::max(a, b));
+    }
+  }
+  return edges;
+}
+
+// measureEdgeSizes() over the edges by lower end: ranges of points run concurrently, each
+// counting its points' distinct higher ends, and their counts are summed (the same for any
+// schedule).
+template <typename End>
+Status measureEdgeSizesOf(const TetMesh& mesh, const HigherEnds<End>& edges,
+  const ParallelFor& parallelFor, EdgeSizeReport& report)
+{
+  const std::int64_t pointCount = mesh.numberOfPoints();
+  const std::int64_t ranges = (pointCount + PointsPerMeasuringRange - 1) / PointsPerMeasuringRange;
+  std::vector<EdgeSizeReport> reports(ranges);
+  std::vector<std::int64_t> withinOfRange(ranges, 0);
+  const double bounds[5] = { 0.5, std::sqrt(0.5), 1.0, std::sqrt(2.0), 2.0 };
+  const Status status = forEachRange(parallelFor, pointCount, PointsPerMeasuringRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      EdgeSizeReport& counts = reports[begin / PointsPerMeasuringRange];
+      std::int64_t& within = withinOfRange[begin / PointsPerMeasuringRange];
+      std::vector<End> distinct;
+      for (PointId a = static_cast<PointId>(begin); a < end; ++a)
+      {
+        // A dozen or so distinct ends, each met several times: a linear search of those found
+        // so far is cheaper than sorting.
+        distinct.clear();
+        for (std::int64_t k = edges.offsets[a]; k < edges.offsets[a + 1]; ++k)
+        {
+          if (std::find(distinct.begin(), distinct.end(), edges.ends[k]) == distinct.end())
+          {
+            distinct.push_back(edges.ends[k]);
+          }
+        }
+        for (const End end : distinct)
+        {
+          const PointId b = static_cast<PointId>(end);
+          if (!std::isfinite(mesh.sizes[a]) || !std::isfinite(mesh.sizes[b]))
+          {
+            continue; // outside a refinement selection: the field does not apply there
+          }
+          const double length = std::sqrt(squaredEdgeLength(mesh, a, b));
+          const double ratio = length / (0.5 * (mesh.sizes[a] + mesh.sizes[b]));
+          const int bin = static_cast<int>(std::upper_bound(bounds, bounds + 5, ratio) - bounds);
+          ++counts.histogram[bin];
+          ++counts.edges;
+          // Both ends belong to the interval; an edge of exactly sqrt(2) h is not split.
+          within += ratio >= bounds[1] * (1 - 1e-12) && ratio <= bounds[3] * (1 + 1e-12);
+        }
+      }
+    });
+  report = EdgeSizeReport();
+  std::int64_t within = 0;
+  for (std::int64_t range = 0; range < ranges; ++range)
+  {
+    report.edges += reports[range].edges;
+    within += withinOfRange[range];
+    for (std::size_t bin = 0; bin < report.histogram.size(); ++bin)
+    {
+      report.histogram[bin] += reports[range].histogram[bin];
+    }
+  }
+  report.shareWithinBounds =
+    report.edges > 0 ? static_cast<double>(within) / static_cast<double>(report.edges) : 0;
+  return status;
+}
 
 } // namespace
 
@@ -165,65 +272,12 @@ void limitSizeGradation(const TetMesh& mesh, double gradation, std::vector<doubl
 
 Status measureEdgeSizes(const TetMesh& mesh, const ParallelFor& parallelFor, EdgeSizeReport& report)
 {
-  // Each edge once, from its lower end: ranges of points run concurrently, each sorting its
-  // points' higher partners, and their counts are summed (the same for any schedule).
-  const TetsAroundPoints around = tetsAroundPoints(mesh);
-  const std::int64_t pointCount = mesh.numberOfPoints();
-  const std::int64_t ranges = (pointCount + PointsPerMeasuringRange - 1) / PointsPerMeasuringRange;
-  std::vector<EdgeSizeReport> reports(ranges);
-  std::vector<std::int64_t> withinOfRange(ranges, 0);
-  const double bounds[5] = { 0.5, std::sqrt(0.5), 1.0, std::sqrt(2.0), 2.0 };
-  const Status status = forEachRange(parallelFor, pointCount, PointsPerMeasuringRange,
-    [&](std::int64_t begin, std::int64_t end)
-    {
-      EdgeSizeReport& counts = reports[begin / PointsPerMeasuringRange];
-      std::int64_t& within = withinOfRange[begin / PointsPerMeasuringRange];
-      std::vector<PointId> partners;
-      for (PointId a = static_cast<PointId>(begin); a < end; ++a)
-      {
-        partners.clear();
-        for (std::int64_t k = around.offsets[a]; k < around.offsets[a + 1]; ++k)
-        {
-          for (PointId b : mesh.tets[around.tets[k]])
-          {
-            if (b > a)
-            {
-              partners.push_back(b);
-            }
-          }
-        }
-        std::sort(partners.begin(), partners.end());
-        partners.erase(std::unique(partners.begin(), partners.end()), partners.end());
-        for (PointId b : partners)
-        {
-          if (!std::isfinite(mesh.sizes[a]) || !std::isfinite(mesh.sizes[b]))
-          {
-            continue; // outside a refinement selection: the field does not apply there
-          }
-          const double length = std::sqrt(squaredEdgeLength(mesh, a, b));
-          const double ratio = length / (0.5 * (mesh.sizes[a] + mesh.sizes[b]));
-          const int bin = static_cast<int>(std::upper_bound(bounds, bounds + 5, ratio) - bounds);
-          ++counts.histogram[bin];
-          ++counts.edges;
-          // Both ends belong to the interval; an edge of exactly sqrt(2) h is not split.
-          within += ratio >= bounds[1] * (1 - 1e-12) && ratio <= bounds[3] * (1 + 1e-12);
-        }
-      }
-    });
-  report = EdgeSizeReport();
-  std::int64_t within = 0;
-  for (std::int64_t range = 0; range < ranges; ++range)
+  // Point ids fit 32 bits on any mesh this machine holds; the wider list is for the rest.
+  if (mesh.numberOfPoints() <= static_cast<PointId>(std::numeric_limits<std::uint32_t>::max()))
   {
-    report.edges += reports[range].edges;
-    within += withinOfRange[range];
-    for (std::size_t bin = 0; bin < report.histogram.size(); ++bin)
-    {
-      report.histogram[bin] += reports[range].histogram[bin];
-    }
+    return measureEdgeSizesOf(mesh, higherEnds<std::uint32_t>(mesh), parallelFor, report);
   }
-  report.shareWithinBounds =
-    report.edges > 0 ? static_cast<double>(within) / static_cast<double>(report.edges) : 0;
-  return status;
+  return measureEdgeSizesOf(mesh, higherEnds<PointId>(mesh), parallelFor, report);
 }
 
 Status edgeLengthRatios(
