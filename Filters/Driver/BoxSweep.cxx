@@ -23,6 +23,7 @@ Status runSweepOverBoxes(ColorLoopSetup sweep, const AdaptationOptions& options,
   }
   std::vector<PartitionMesh> staying = std::move(state.partitions);
   state.partitions = std::move(boxes);
+  state.improvementLeft.assign(state.partitions.size(), ImprovementLeft());
   boxCount = state.partitions.size();
   PartitionGraph graph;
   status = buildBoxGraph(state.partitions, state.coordinates, layout, parallelFor, graph);
@@ -41,6 +42,7 @@ Status runSweepOverBoxes(ColorLoopSetup sweep, const AdaptationOptions& options,
   std::copy_if(std::make_move_iterator(staying.begin()), std::make_move_iterator(staying.end()),
     std::back_inserter(state.partitions),
     [](const PartitionMesh& partition) { return !partition.tets.empty(); });
+  state.improvementLeft.resize(state.partitions.size()); // the staying ones: unknown
   return status;
 }
 

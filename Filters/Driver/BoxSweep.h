@@ -19,21 +19,39 @@ namespace cgmesh
 
 // Flags, in `flagged` (sized to every point), the corners of the tets of the first `candidates`
 // partitions that pass `selects`, looked at in parallel; returns how many tets passed. The tets
-// a sweep works on: only those touching a flagged point go into its boxes.
+// a sweep works on: only those touching a flagged point go into its boxes. With `onlyLeft`, a
+// partition whose improvement left is known is looked at in the tets it names alone (`selects`
+// must then pass no tet that improvement would not work on).
 template <typename Selects>
 std::int64_t flagCornersOfSelectedTets(int threads, const AdaptationState& state,
-  std::size_t candidates, const Selects& selects, std::vector<char>& flagged, Status& status)
+  std::size_t candidates, const Selects& selects, std::vector<char>& flagged, Status& status,
+  bool onlyLeft = false)
 {
   std::vector<std::vector<PointId>> corners(candidates);
   status = runParallel(threads, static_cast<std::int64_t>(candidates),
     [&](std::int64_t p)
     {
-      for (const Tet& tet : state.partitions[p].tets)
+      const TetList& tets = state.partitions[p].tets;
+      const auto select = [&](const Tet& tet)
       {
         if (selects(tet))
         {
           corners[p].insert(corners[p].end(), tet.begin(), tet.end());
         }
+      };
+      const bool known = onlyLeft && static_cast<std::size_t>(p) < state.improvementLeft.size() &&
+        state.improvementLeft[p].known && state.improvementLeft[p].tetCount == tets.size();
+      if (known)
+      {
+        for (std::size_t t : state.improvementLeft[p].tets)
+        {
+          select(tets[t]);
+        }
+        return;
+      }
+      for (const Tet& tet : tets)
+      {
+        select(tet);
       }
     });
   flagged.resize(state.coordinates.size() / 3, 0);

@@ -229,8 +229,16 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
   Status status = runParallel(setup.threads, count,
     [&](std::int64_t i)
     {
-      reports[i] =
-        refineOnePartition(iteration, state, members[i], iteration.splitsOfEarlierColors);
+      const int p = members[i];
+      reports[i] = refineOnePartition(iteration, state, p, iteration.splitsOfEarlierColors);
+      // What its improvement left is still known where templates neither split nor healed
+      // (a partition settled in an earlier pass); TetGen may change tets without a new point.
+      const PartitionRefinement& refinement = iteration.refinements[p];
+      if (setup.method != RefinementMethod::Template || !refinement.newPointSources.empty() ||
+        refinement.healedSplits != 0)
+      {
+        state.improvementLeft[p] = ImprovementLeft();
+      }
     });
   const bool beforeRefinement = setup.stage == Stage::ImproveInput;
   if (setup.remeshSweep)
@@ -296,8 +304,11 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
         points.globalSizes = &state.sizes;
         points.provisionalSizes = &refinement.newSizes;
       }
+      ImprovementLeft& left = state.improvementLeft[p];
       outcomes[i] = improvePartition(state.partitions[p], points, iteration.setup.improvement,
-        statistics[i], refinement.movedPoints);
+        statistics[i], refinement.movedPoints, &left.tets);
+      left.known = outcomes[i].ok();
+      left.tetCount = state.partitions[p].tets.size();
     });
   for (std::size_t i = 0; i < members.size(); ++i)
   {
@@ -474,6 +485,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
   const int steps = setup.numberOfIterations * setup.numberOfColors;
   std::size_t pointsAtLastPass = 0;
   std::vector<char> awaitingImprovement(state.partitions.size(), 1); // none improved yet
+  state.improvementLeft.assign(state.partitions.size(), ImprovementLeft());
   // Its figures per partition, but not those of the interface rounds before the input's slivers
   // are meshed anew.
   const bool refinesPartitions =

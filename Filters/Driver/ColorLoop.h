@@ -19,10 +19,22 @@
 namespace cgmesh
 {
 
+// What improvement left to do in one partition (see AdaptationState::improvementLeft).
+struct ImprovementLeft
+{
+  bool known = false;
+  std::size_t tetCount = 0;      // the partition's tets when this was recorded
+  std::vector<std::size_t> tets; // the indices of those that still need improvement
+};
+
 // The evolving global state of one adaptation run.
 struct AdaptationState
 {
   std::vector<PartitionMesh> partitions;
+  // Per partition, what the last colour loop's improvement left to do in it, known while the
+  // partition stays as it was improved: the improvement sweeps across former interfaces look for
+  // work among those tets alone instead of screening every tet again (unknown: every tet).
+  std::vector<ImprovementLeft> improvementLeft;
   std::vector<double> coordinates; // all global points
   std::vector<double> sizes;       // with a size field: h of every global point
   PointId inputPointCount = 0;

@@ -174,6 +174,58 @@ void test_collapse_only_where_flagged()
   }
 }
 
+// The tets improvePartition() reports left to do are exactly those that still need improvement
+// afterwards, tried on a refined device taken whole as one partition (its boundary and material
+// interfaces frozen, so work is left there), with and without coarsening to a size field.
+void test_tets_left_are_those_still_needing_work()
+{
+  TetMesh input;
+  CHECK(generateFinFet(15000, input).ok());
+  AdaptationOptions options;
+  options.numberOfPartitions = 8;
+  options.edgeLengthFactor = 0.6;
+  options.improveQuality = false;
+  AdaptationResult refined;
+  CHECK(adaptMesh(input, options, refined).ok());
+  for (bool coarsen : { false, true })
+  {
+    PartitionMesh partition;
+    partition.tets = refined.mesh.tets;
+    partition.regions = refined.mesh.regions;
+    partition.parentCells.assign(partition.tets.size(), 0);
+    std::vector<double> coordinates = refined.mesh.coordinates, provisional, provisionalSizes;
+    // Sizes that make part of the edges short.
+    std::vector<double> sizes(
+      refined.mesh.numberOfPoints(), 0.8 * refined.summary.plan.edgeLengthThreshold);
+    PartitionPoints points{ &coordinates, &provisional };
+    if (coarsen)
+    {
+      points.globalSizes = &sizes;
+      points.provisionalSizes = &provisionalSizes;
+    }
+    ImprovementParameters parameters;
+    parameters.coarsen = coarsen;
+    ImprovementStatistics statistics;
+    std::vector<PointId> moved;
+    std::vector<std::size_t> left = { 12345 }; // replaced, not appended to
+    CHECK(improvePartition(partition, points, parameters, statistics, moved, &left).ok());
+    std::vector<std::size_t> expected;
+    for (std::size_t t = 0; t < partition.tets.size(); ++t)
+    {
+      if (needsImprovement(partition.tets[t], points, parameters))
+      {
+        expected.push_back(t);
+      }
+    }
+    CHECK(left == expected);
+    std::cout << (coarsen ? "with" : "without") << " coarsening: " << expected.size() << " of "
+              << partition.tets.size() << " tets left to improve\n";
+    CHECK(!expected.empty() && expected.size() < partition.tets.size());
+    CHECK(statistics.edgeRemovals + statistics.faceSwaps + statistics.vertexMoves > 0);
+    CHECK(!coarsen || statistics.edgeCollapses > 0);
+  }
+}
+
 // Moved and derived points are relocated in the input: linear point data stays exact.
 void checkLinearDataExact(const TetMesh& input, const AdaptationResult& result)
 {
@@ -339,6 +391,7 @@ int main()
   test_smoothing_moves_free_vertex_only();
   test_edge_removal_three_to_two();
   test_collapse_only_where_flagged();
+  test_tets_left_are_those_still_needing_work();
   test_device_refinement_with_improvement();
   test_improvement_over_several_passes();
   test_input_improved_before_refinement();

@@ -595,10 +595,27 @@ bool needsImprovement(
 
 Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   const ImprovementParameters& parameters, ImprovementStatistics& statistics,
-  std::vector<PointId>& movedPoints)
+  std::vector<PointId>& movedPoints, std::vector<std::size_t>* tetsLeft)
 {
+  // The tets from `first` on that still need work.
+  const auto listTetsLeft = [&](std::size_t first)
+  {
+    if (!tetsLeft)
+    {
+      return;
+    }
+    tetsLeft->clear();
+    for (std::size_t t = first; t < partition.tets.size(); ++t)
+    {
+      if (needsImprovement(partition.tets[t], points, parameters))
+      {
+        tetsLeft->push_back(t);
+      }
+    }
+  };
   if (partition.tets.empty() || parameters.passes <= 0)
   {
+    listTetsLeft(0);
     return Status::success();
   }
   std::int64_t poorTets = 0;
@@ -606,17 +623,21 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   statistics.poorTets += poorTets;
   if (vertices.empty())
   {
-    return Status::success(); // nothing to work on: skip building the local structures
+    listTetsLeft(partition.tets.size()); // none: every tet passed the screening
+    return Status::success();            // nothing to work on: skip building the local structures
   }
   try
   {
     // The improver freezes the boundary of what it is given, so the neighbourhood's cut through
-    // the partition stays as it is, and the tets outside it are untouched.
+    // the partition stays as it is, and the tets outside it are untouched. Those passed the
+    // screening (no corner is a vertex of work), so only the neighbourhood's can be left to do.
     PartitionMesh neighbourhood = improvement::extractNeighbourhood(partition, vertices);
+    const std::size_t staying = partition.tets.size();
     improvement::Improver improver(neighbourhood, points);
     improver.run(parameters, statistics);
     improver.writeBack(movedPoints);
     improvement::appendMesh(partition, neighbourhood);
+    listTetsLeft(staying);
   }
   catch (const std::bad_alloc&)
   {

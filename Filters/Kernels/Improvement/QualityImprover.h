@@ -96,9 +96,12 @@ bool needsImprovement(
   const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters);
 
 // Improves `partition` in place; appends the ids of the vertices it moved to `movedPoints`.
+// `tetsLeft`, when given, becomes the indices (ascending) of the partition's tets that still need
+// improvement (needsImprovement() with `parameters`) afterwards: every other tet passes it, so a
+// later search for work may look at these alone while the partition stays as it is.
 Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   const ImprovementParameters& parameters, ImprovementStatistics& statistics,
-  std::vector<PointId>& movedPoints);
+  std::vector<PointId>& movedPoints, std::vector<std::size_t>* tetsLeft = nullptr);
 
 } // namespace cgmesh
 
