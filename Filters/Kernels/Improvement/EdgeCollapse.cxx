@@ -113,11 +113,7 @@ bool Improver::linkConditionHolds(int a, int b)
     return std::find(ring.begin(), ring.end(), v) != ring.end();
   };
 
-  if (++this->LinkStamp == 0) // wrapped: no old mark may match
-  {
-    std::fill(this->NeighbourMark.begin(), this->NeighbourMark.end(), 0);
-    this->LinkStamp = 1;
-  }
+  this->nextLinkStamp();
   for (int t : this->Incident[a])
   {
     for (int w : this->Tets[t])
@@ -181,11 +177,7 @@ bool Improver::linkConditionHolds(int a, int b)
 // often as those two together, and costs a fraction of the quality.
 bool Improver::collapseMakesLongEdge(int a, int b, const std::vector<int>& ball)
 {
-  if (++this->LinkStamp == 0) // wrapped: no old mark may match
-  {
-    std::fill(this->NeighbourMark.begin(), this->NeighbourMark.end(), 0);
-    this->LinkStamp = 1;
-  }
+  this->nextLinkStamp();
   for (int t : ball)
   {
     const Corners& corners = this->Tets[t];

@@ -71,6 +71,8 @@ private:
   bool swapFace(int t, int skip);
   bool smoothVertex(int v);
   bool isFixed(int v);
+  bool mayBeFree(int v);
+  void nextLinkStamp();
 
   // The size field (EdgeCollapse.cxx), and coarsening.
   double sizeAt(int v) const { return this->Size[v]; }
@@ -120,7 +122,8 @@ private:
   std::vector<std::pair<double, int>> CollapseCandidates;
   std::vector<int> LinkRing;
   std::vector<std::pair<int, int>> LinkRingEdges, LinkEdgesOfA, LinkEdgesOfB;
-  // LinkStamp where a vertex neighbours the collapsed end, or is a new neighbour of the kept one
+  // LinkStamp where a vertex neighbours the collapsed end, is a new neighbour of the kept one, or
+  // a neighbour mayBeFree() counted; nextLinkStamp() starts a new marking.
   std::vector<unsigned> NeighbourMark;
   struct LinkEdge // a face at the vertex isFixed looks at, by its other two corners
   {
