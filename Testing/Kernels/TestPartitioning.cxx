@@ -3,7 +3,9 @@
 // every grid cell once, each step to a face neighbour; its partitions: equal runs. Box partitions
 // of the improvement sweeps: every tet in one box (or settled) in the order a serial pass gives,
 // whatever the schedule, the others left in place, and a box graph holding every pair of boxes that
-// share a point.
+// share a point. The face table every face search uses: each face once, with the first two tets
+// that hold it and their count.
+#include "Core/FaceKey.h"
 #include "Core/ParallelSort.h"
 #include "CubeGenerator.h"
 #include "Partitioning/BoxPartitions.h"
@@ -15,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <vector>
 
 using namespace cgmesh;
@@ -307,6 +310,64 @@ void test_box_graph_holds_every_shared_point()
 
 } // namespace
 
+// The face table against a map of every face: the Kuhn cube with its corners taken in a
+// scrambled order (shared and boundary faces), the same tets once more at the end (each face then
+// held two or four times), and a soup of tets with no face in common (the table's worst case: 4
+// distinct faces per tet).
+void test_distinct_faces_match_a_map()
+{
+  TetMesh cube;
+  CHECK(generateKuhnCube(5, cube).ok());
+  std::vector<PointId> scrambled(cube.numberOfPoints());
+  for (std::size_t p = 0; p < scrambled.size(); ++p)
+  {
+    scrambled[p] = static_cast<PointId>((p * 7919) % scrambled.size() + 1000);
+  }
+  std::vector<PointId> withRepeats, soup;
+  for (const Tet& tet : cube.tets)
+  {
+    for (PointId p : tet)
+    {
+      withRepeats.push_back(scrambled[p]);
+    }
+  }
+  const std::size_t once = withRepeats.size();
+  withRepeats.insert(withRepeats.end(), withRepeats.begin(), withRepeats.begin() + once);
+  for (PointId p = 0; p < 4 * 257; ++p)
+  {
+    soup.push_back(p);
+  }
+  for (const std::vector<PointId>* corners : { &withRepeats, &soup })
+  {
+    const std::size_t tetCount = corners->size() / 4;
+    std::map<Face, std::vector<std::size_t>> expected;
+    for (std::size_t t = 0; t < tetCount; ++t)
+    {
+      for (int skip = 0; skip < 4; ++skip)
+      {
+        expected[sortedFace(corners->data() + 4 * t, skip)].push_back(t);
+      }
+    }
+    std::map<Face, std::array<std::size_t, 3>> found;
+    forEachDistinctFace(corners->data(), tetCount,
+      [&](const Face& face, std::size_t first, std::size_t second, std::size_t count) {
+        CHECK(found.emplace(face, std::array<std::size_t, 3>{ first, second, count }).second);
+      });
+    CHECK_EQUAL(found.size(), expected.size());
+    for (const auto& [face, tets] : expected)
+    {
+      const auto match = found.find(face);
+      CHECK(match != found.end());
+      if (match != found.end())
+      {
+        CHECK_EQUAL(match->second[0], tets[0]);
+        CHECK_EQUAL(match->second[1], tets.size() > 1 ? tets[1] : tets[0]);
+        CHECK_EQUAL(match->second[2], tets.size());
+      }
+    }
+  }
+}
+
 int main()
 {
   test_flat_and_hierarchical();
@@ -315,5 +376,6 @@ int main()
   test_hilbert_partitions_are_equal_runs();
   test_box_regrouping_keeps_every_tet_in_serial_order();
   test_box_graph_holds_every_shared_point();
+  test_distinct_faces_match_a_map();
   return cgmesh_test::finish("TestPartitioning");
 }
