@@ -324,7 +324,36 @@ CellId Improver::parentOf(const Corners& corners, const std::vector<int>& replac
   return this->Parents[best];
 }
 
-void Improver::writeBack(std::vector<PointId>& movedPoints)
+// needsImprovement() of tet t, from the improver's own copies of the points and sizes: the same
+// values, without looking each point up again.
+bool Improver::needsWork(int t) const
+{
+  const Corners& c = this->Tets[t];
+  if (this->Parameters.improve &&
+    meanRatioBelow(this->at(c[0]), this->at(c[1]), this->at(c[2]), this->at(c[3]),
+      this->Parameters.targetQuality))
+  {
+    return true;
+  }
+  if (!this->Parameters.coarsen)
+  {
+    return false;
+  }
+  for (const auto& corners : TetEdgeCorners)
+  {
+    const int a = c[corners[0]], b = c[corners[1]];
+    if ((mayCollapse(this->IdOf[a], this->Parameters) ||
+          mayCollapse(this->IdOf[b], this->Parameters)) &&
+      this->isShort(a, b))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+void Improver::writeBack(
+  std::vector<PointId>& movedPoints, std::size_t firstIndex, std::vector<std::size_t>* tetsLeft)
 {
   PartitionMesh improved;
   const bool hasRegions = !this->Partition.regions.empty();
@@ -333,6 +362,10 @@ void Improver::writeBack(std::vector<PointId>& movedPoints)
     if (!this->Alive[t])
     {
       continue;
+    }
+    if (tetsLeft && this->needsWork(static_cast<int>(t)))
+    {
+      tetsLeft->push_back(firstIndex + improved.tets.size());
     }
     const Corners& c = this->Tets[t];
     improved.tets.push_back(

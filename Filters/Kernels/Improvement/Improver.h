@@ -40,7 +40,10 @@ public:
   Improver(PartitionMesh& partition, const PartitionPoints& points);
 
   void run(const ImprovementParameters& parameters, ImprovementStatistics& statistics);
-  void writeBack(std::vector<PointId>& movedPoints);
+  // Hands the tets back to the partition (and the moved vertices to `movedPoints`); with
+  // `tetsLeft`, appends firstIndex + i for each tet i handed back that still needs improvement.
+  void writeBack(std::vector<PointId>& movedPoints, std::size_t firstIndex = 0,
+    std::vector<std::size_t>* tetsLeft = nullptr);
 
 private:
   const double* at(int v) const { return this->Position[v]; }
@@ -71,6 +74,7 @@ private:
   bool swapFace(int t, int skip);
   bool smoothVertex(int v);
   bool isFixed(int v);
+  bool needsWork(int t) const;
   bool mayBeFree(int v);
   void nextLinkStamp();
 

@@ -597,25 +597,19 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   const ImprovementParameters& parameters, ImprovementStatistics& statistics,
   std::vector<PointId>& movedPoints, std::vector<std::size_t>* tetsLeft)
 {
-  // The tets from `first` on that still need work.
-  const auto listTetsLeft = [&](std::size_t first)
+  if (tetsLeft)
   {
-    if (!tetsLeft)
-    {
-      return;
-    }
     tetsLeft->clear();
-    for (std::size_t t = first; t < partition.tets.size(); ++t)
+  }
+  if (partition.tets.empty() || parameters.passes <= 0)
+  {
+    for (std::size_t t = 0; tetsLeft && t < partition.tets.size(); ++t)
     {
       if (needsImprovement(partition.tets[t], points, parameters))
       {
         tetsLeft->push_back(t);
       }
     }
-  };
-  if (partition.tets.empty() || parameters.passes <= 0)
-  {
-    listTetsLeft(0);
     return Status::success();
   }
   std::int64_t poorTets = 0;
@@ -623,8 +617,7 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   statistics.poorTets += poorTets;
   if (vertices.empty())
   {
-    listTetsLeft(partition.tets.size()); // none: every tet passed the screening
-    return Status::success();            // nothing to work on: skip building the local structures
+    return Status::success(); // nothing to work on (nor left): skip building the local structures
   }
   try
   {
@@ -632,12 +625,10 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
     // the partition stays as it is, and the tets outside it are untouched. Those passed the
     // screening (no corner is a vertex of work), so only the neighbourhood's can be left to do.
     PartitionMesh neighbourhood = improvement::extractNeighbourhood(partition, vertices);
-    const std::size_t staying = partition.tets.size();
     improvement::Improver improver(neighbourhood, points);
     improver.run(parameters, statistics);
-    improver.writeBack(movedPoints);
+    improver.writeBack(movedPoints, partition.tets.size(), tetsLeft);
     improvement::appendMesh(partition, neighbourhood);
-    listTetsLeft(staying);
   }
   catch (const std::bad_alloc&)
   {
