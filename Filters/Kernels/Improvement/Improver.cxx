@@ -196,7 +196,7 @@ void Improver::nextLinkStamp()
   }
 }
 
-// A necessary condition for isFixed() to find v free, at a tenth of its cost: the tets around a
+// A necessary condition for isFixed() to find v free, without its face table: the tets around a
 // free vertex are of one region, and their faces opposite it close into a sphere, for which
 // Euler's formula with every edge on two of its F triangles gives F / 2 + 2 distinct corners
 // (boundary or interface vertices have more, or two regions). On the graded Big cube with its
