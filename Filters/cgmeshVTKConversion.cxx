@@ -178,41 +178,75 @@ std::string describeNonTetrahedra(vtkUnstructuredGrid* grid, bool trianglesAccep
 namespace
 {
 
-void copyPoints(vtkUnstructuredGrid* grid, TetMesh& mesh)
+// The conversions below read the input by ranges of points or cells, concurrently through
+// `parallelFor`: only reads of the input's arrays, each range writing its own part of `mesh`.
+// Serial, reading the 844k-tet FinFET took 0.07 s, the same at 1 and 2 threads.
+void copyPoints(vtkUnstructuredGrid* grid, TetMesh& mesh, const ParallelFor& parallelFor)
 {
   const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
   mesh.coordinates.resize(3 * static_cast<size_t>(numberOfPoints));
-  vtkPoints* points = grid->GetPoints();
-  for (vtkIdType pointId = 0; pointId < numberOfPoints; ++pointId)
-  {
-    points->GetPoint(pointId, mesh.coordinates.data() + 3 * pointId);
-  }
+  vtkDataArray* coordinates = grid->GetPoints()->GetData();
+  forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (vtkIdType pointId = begin; pointId < end; ++pointId)
+      {
+        coordinates->GetTuple(pointId, mesh.coordinates.data() + 3 * pointId);
+      }
+    });
 }
 
-Status copyTetrahedra(vtkUnstructuredGrid* grid, TetMesh& mesh)
+// The corners of cells [begin, end) from the cell array's offsets and connectivity; false when a
+// cell does not have 4 points.
+template <typename Index>
+bool copyCorners(const Index* offsets, const Index* connectivity, std::int64_t begin,
+  std::int64_t end, TetMesh& mesh)
 {
-  mesh.tets.resize(static_cast<size_t>(grid->GetNumberOfCells()));
-  auto iterator = vtk::TakeSmartPointer(grid->GetCells()->NewIterator());
-  size_t tetIndex = 0;
-  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  for (std::int64_t cell = begin; cell < end; ++cell)
   {
-    vtkIdType numberOfCellPoints;
-    const vtkIdType* cellPoints;
-    iterator->GetCurrentCell(numberOfCellPoints, cellPoints);
-    if (numberOfCellPoints != 4)
+    if (offsets[cell + 1] - offsets[cell] != 4)
     {
-      return Status::failure("a tetrahedron does not have 4 points");
+      return false;
     }
+    const Index* corners = connectivity + offsets[cell];
     for (int corner = 0; corner < 4; ++corner)
     {
-      mesh.tets[tetIndex][corner] = static_cast<PointId>(cellPoints[corner]);
+      mesh.tets[cell][corner] = static_cast<PointId>(corners[corner]);
     }
-    ++tetIndex;
+  }
+  return true;
+}
+
+Status copyTetrahedra(vtkUnstructuredGrid* grid, TetMesh& mesh, const ParallelFor& parallelFor)
+{
+  const vtkIdType numberOfCells = grid->GetNumberOfCells();
+  mesh.tets.resize(static_cast<size_t>(numberOfCells));
+  vtkCellArray* cells = grid->GetCells();
+  const std::int64_t ranges = (numberOfCells + IndicesPerCopyRange - 1) / IndicesPerCopyRange;
+  std::vector<char> failed(static_cast<std::size_t>(ranges), 0);
+  const Status status = forEachRange(parallelFor, numberOfCells, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      const bool copied = cells->IsStorage64Bit()
+        ? copyCorners(cells->GetOffsetsArray64()->GetPointer(0),
+            cells->GetConnectivityArray64()->GetPointer(0), begin, end, mesh)
+        : copyCorners(cells->GetOffsetsArray32()->GetPointer(0),
+            cells->GetConnectivityArray32()->GetPointer(0), begin, end, mesh);
+      failed[begin / IndicesPerCopyRange] = !copied;
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+  if (std::find(failed.begin(), failed.end(), 1) != failed.end())
+  {
+    return Status::failure("a tetrahedron does not have 4 points");
   }
   return Status::success();
 }
 
-Status copyRegions(vtkUnstructuredGrid* grid, const std::string& regionArrayName, TetMesh& mesh)
+Status copyRegions(vtkUnstructuredGrid* grid, const std::string& regionArrayName, TetMesh& mesh,
+  const ParallelFor& parallelFor)
 {
   vtkAbstractArray* abstractArray = grid->GetCellData()->GetAbstractArray(regionArrayName.c_str());
   if (!abstractArray)
@@ -227,16 +261,31 @@ Status copyRegions(vtkUnstructuredGrid* grid, const std::string& regionArrayName
   }
   const vtkIdType numberOfCells = grid->GetNumberOfCells();
   mesh.regions.resize(static_cast<size_t>(numberOfCells));
-  for (vtkIdType cellId = 0; cellId < numberOfCells; ++cellId)
-  {
-    // Labels stored as floating point are rounded, not truncated (2.9999999 is region 3).
-    const double value = std::round(regionArray->GetComponent(cellId, 0));
-    if (!(std::abs(value) <= static_cast<double>(std::numeric_limits<int>::max())))
+  const std::int64_t ranges = (numberOfCells + IndicesPerCopyRange - 1) / IndicesPerCopyRange;
+  std::vector<char> failed(static_cast<std::size_t>(ranges), 0);
+  const Status status = forEachRange(parallelFor, numberOfCells, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
     {
-      return Status::failure(
-        "region array '" + regionArrayName + "' holds a value that is not a valid int");
-    }
-    mesh.regions[cellId] = static_cast<int>(value);
+      for (vtkIdType cellId = begin; cellId < end; ++cellId)
+      {
+        // Labels stored as floating point are rounded, not truncated (2.9999999 is region 3).
+        const double value = std::round(regionArray->GetComponent(cellId, 0));
+        if (!(std::abs(value) <= static_cast<double>(std::numeric_limits<int>::max())))
+        {
+          failed[begin / IndicesPerCopyRange] = 1;
+          return;
+        }
+        mesh.regions[cellId] = static_cast<int>(value);
+      }
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+  if (std::find(failed.begin(), failed.end(), 1) != failed.end())
+  {
+    return Status::failure(
+      "region array '" + regionArrayName + "' holds a value that is not a valid int");
   }
   return Status::success();
 }
@@ -341,16 +390,16 @@ bool isIntegerDataType(int type)
 }
 
 Status convertToTetMesh(vtkUnstructuredGrid* grid, const std::string& regionArrayName,
-  TetMesh& mesh, const std::string& sizeArrayName)
+  TetMesh& mesh, const std::string& sizeArrayName, const ParallelFor& parallelFor)
 {
   mesh = TetMesh();
   if (grid->GetNumberOfPoints() > 0)
   {
-    copyPoints(grid, mesh);
+    copyPoints(grid, mesh, parallelFor);
   }
   if (grid->GetNumberOfCells() > 0)
   {
-    Status status = copyTetrahedra(grid, mesh);
+    Status status = copyTetrahedra(grid, mesh, parallelFor);
     if (!status.ok())
     {
       return status;
@@ -358,7 +407,7 @@ Status convertToTetMesh(vtkUnstructuredGrid* grid, const std::string& regionArra
   }
   if (!regionArrayName.empty())
   {
-    Status status = copyRegions(grid, regionArrayName, mesh);
+    Status status = copyRegions(grid, regionArrayName, mesh, parallelFor);
     if (!status.ok())
     {
       return status;

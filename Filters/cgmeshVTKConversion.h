@@ -51,9 +51,11 @@ CGMESHFILTERS_EXPORT void copyCellData(vtkCellData* input, vtkIdType numberOfCel
 // or non-numeric array is a failure. When `sizeArrayName` is not empty the named point array, or
 // else cell array averaged to the points, becomes mesh.sizes (one component, positive and finite
 // values, else a failure naming the first bad value). The grid must hold only VTK_TETRA cells.
+// Points, cells and regions are read by ranges through `parallelFor`.
 CGMESHFILTERS_EXPORT Status convertToTetMesh(vtkUnstructuredGrid* grid,
   const std::string& regionArrayName, TetMesh& mesh,
-  const std::string& sizeArrayName = std::string());
+  const std::string& sizeArrayName = std::string(),
+  const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 // Replaces the geometry of `grid` with `mesh` (double points, VTK_TETRA cells). When the mesh has
 // regions and `regionArrayName` is not empty, they are stored as an int cell array of that name.

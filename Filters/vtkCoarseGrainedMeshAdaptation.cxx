@@ -10,6 +10,7 @@
 
 #include "AdaptationDriver.h"
 #include "Core/Stopwatch.h"
+#include "ParallelFor.h"
 
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
@@ -493,8 +494,9 @@ bool vtkCoarseGrainedMeshAdaptation::ConvertPiece(
   PieceRun& run, const std::vector<std::string>& materialLabels, bool distributed)
 {
   const std::string regionArrayName = this->ResolveRegionArrayName(run.input);
-  cgmesh::Status status = cgmesh::convertToTetMesh(
-    run.tets, regionArrayName, run.mesh, this->ResolveSizeArrayName(run.input));
+  cgmesh::Status status = cgmesh::convertToTetMesh(run.tets, regionArrayName, run.mesh,
+    this->ResolveSizeArrayName(run.input),
+    cgmesh::parallelForOn(cgmesh::resolveThreadCount(this->Internals->Parameters.numberOfThreads)));
   if (!status.ok())
   {
     vtkErrorMacro(<< "Cannot read the input: " << status.message() << ".");
