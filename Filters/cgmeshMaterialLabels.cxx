@@ -2,8 +2,6 @@
 
 #include "cgmeshVTKConversion.h"
 
-#include "ParallelFor.h"
-
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
@@ -68,8 +66,8 @@ std::vector<std::string> findMaterialLabelArrays(vtkUnstructuredGrid* grid)
   return names;
 }
 
-Status combineMaterialLabels(
-  vtkUnstructuredGrid* grid, const std::vector<std::string>& arrayNames, int threads, TetMesh& mesh)
+Status combineMaterialLabels(vtkUnstructuredGrid* grid, const std::vector<std::string>& arrayNames,
+  const ParallelFor& parallelFor, TetMesh& mesh)
 {
   const vtkIdType cells = grid->GetNumberOfCells();
   std::vector<vtkDataArray*> arrays;
@@ -89,7 +87,6 @@ Status combineMaterialLabels(
   // range handles its runs of cells with the same combination, one look-up per run. Two passes:
   // the combinations first (numbered in sorted order), then each cell's number.
   const std::int64_t rangeSize = IndicesPerCopyRange;
-  const ParallelFor parallelFor = parallelForOn(resolveThreadCount(threads));
   auto forEachRun = [&](std::int64_t begin, std::int64_t end, auto&& visit)
   {
     Combination values(arrays.size()), next(arrays.size());

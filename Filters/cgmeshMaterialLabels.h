@@ -7,6 +7,7 @@
 #include "cgmeshFiltersModule.h" // for export macro
 
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
 
 #include <string>
@@ -26,10 +27,10 @@ namespace cgmesh
 CGMESHFILTERS_EXPORT std::vector<std::string> findMaterialLabelArrays(vtkUnstructuredGrid* grid);
 
 // Sets mesh.regions from the arrays named: cells with the same value in every array share a
-// region id, numbered 0, 1, ... in the sorted order of the value combinations. Runs on `threads`
-// threads (0: all cores); the result does not depend on them.
+// region id, numbered 0, 1, ... in the sorted order of the value combinations. Reads ranges of
+// cells through `parallelFor`; the result does not depend on the schedule.
 CGMESHFILTERS_EXPORT Status combineMaterialLabels(vtkUnstructuredGrid* grid,
-  const std::vector<std::string>& arrayNames, int threads, TetMesh& mesh);
+  const std::vector<std::string>& arrayNames, const ParallelFor& parallelFor, TetMesh& mesh);
 
 } // namespace cgmesh
 

@@ -494,9 +494,10 @@ bool vtkCoarseGrainedMeshAdaptation::ConvertPiece(
   PieceRun& run, const std::vector<std::string>& materialLabels, bool distributed)
 {
   const std::string regionArrayName = this->ResolveRegionArrayName(run.input);
-  cgmesh::Status status = cgmesh::convertToTetMesh(run.tets, regionArrayName, run.mesh,
-    this->ResolveSizeArrayName(run.input),
-    cgmesh::parallelForOn(cgmesh::resolveThreadCount(this->Internals->Parameters.numberOfThreads)));
+  const cgmesh::ParallelFor parallelFor =
+    cgmesh::parallelForOn(cgmesh::resolveThreadCount(this->Internals->Parameters.numberOfThreads));
+  cgmesh::Status status = cgmesh::convertToTetMesh(
+    run.tets, regionArrayName, run.mesh, this->ResolveSizeArrayName(run.input), parallelFor);
   if (!status.ok())
   {
     vtkErrorMacro(<< "Cannot read the input: " << status.message() << ".");
@@ -505,8 +506,7 @@ bool vtkCoarseGrainedMeshAdaptation::ConvertPiece(
   // Without a region array, the input's integer cell arrays guard the material interfaces.
   if (regionArrayName.empty() && !materialLabels.empty())
   {
-    status = cgmesh::combineMaterialLabels(
-      run.tets, materialLabels, this->Internals->Parameters.numberOfThreads, run.mesh);
+    status = cgmesh::combineMaterialLabels(run.tets, materialLabels, parallelFor, run.mesh);
     if (!status.ok())
     {
       vtkErrorMacro(<< "Cannot read the input's material labels: " << status.message() << ".");

@@ -37,10 +37,7 @@ Status remeshWholeInput(const ColorLoopSetup& setup, const AdaptationOptions& op
   PartitionMesh whole;
   for (PartitionMesh& partition : state.partitions)
   {
-    for (std::size_t t = 0; t < partition.tets.size(); ++t)
-    {
-      appendTetOf(partition, t, whole);
-    }
+    appendTetsOf(partition, whole);
     partition = PartitionMesh();
   }
   state.partitions.assign(1, std::move(whole));

@@ -41,6 +41,14 @@ inline void appendTetOf(const PartitionMesh& from, std::size_t t, PartitionMesh&
   }
 }
 
+// Appends every tet of `from`, in order, as appendTetOf() does one.
+inline void appendTetsOf(const PartitionMesh& from, PartitionMesh& to)
+{
+  to.tets.insert(to.tets.end(), from.tets.begin(), from.tets.end());
+  to.parentCells.insert(to.parentCells.end(), from.parentCells.begin(), from.parentCells.end());
+  to.regions.insert(to.regions.end(), from.regions.begin(), from.regions.end());
+}
+
 } // namespace cgmesh
 
 #endif

@@ -577,13 +577,6 @@ PartitionMesh extractNeighbourhood(PartitionMesh& partition, const PointIdSet& v
   return chosen;
 }
 
-void appendMesh(PartitionMesh& to, const PartitionMesh& from)
-{
-  to.tets.insert(to.tets.end(), from.tets.begin(), from.tets.end());
-  to.parentCells.insert(to.parentCells.end(), from.parentCells.begin(), from.parentCells.end());
-  to.regions.insert(to.regions.end(), from.regions.begin(), from.regions.end());
-}
-
 } // namespace improvement
 
 bool needsImprovement(
@@ -628,7 +621,7 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
     improvement::Improver improver(neighbourhood, points);
     improver.run(parameters, statistics);
     improver.writeBack(movedPoints, partition.tets.size(), tetsLeft);
-    improvement::appendMesh(partition, neighbourhood);
+    appendTetsOf(neighbourhood, partition);
   }
   catch (const std::bad_alloc&)
   {

@@ -16,78 +16,12 @@ namespace cgmesh
 namespace
 {
 
-// The tets around each point: those of point p are tets[offsets[p]] to tets[offsets[p + 1] - 1].
-struct TetsAroundPoints
-{
-  std::vector<std::int64_t> offsets;
-  std::vector<CellId> tets;
-};
-
-TetsAroundPoints tetsAroundPoints(const TetMesh& mesh)
-{
-  const std::size_t pointCount = static_cast<std::size_t>(mesh.numberOfPoints());
-  TetsAroundPoints around;
-  around.offsets.assign(pointCount + 1, 0);
-  for (const Tet& tet : mesh.tets)
-  {
-    for (PointId p : tet)
-    {
-      ++around.offsets[p + 1];
-    }
-  }
-  for (std::size_t p = 0; p < pointCount; ++p)
-  {
-    around.offsets[p + 1] += around.offsets[p];
-  }
-  around.tets.resize(around.offsets.back());
-  std::vector<std::int64_t> fill(around.offsets.begin(), around.offsets.end() - 1);
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-  {
-    for (PointId p : mesh.tets[t])
-    {
-      around.tets[fill[p]++] = static_cast<CellId>(t);
-    }
-  }
-  return around;
-}
-
-// Every edge of the mesh once, as (low id, high id): by low id, each low id's partners in the
-// order its tets meet them. Serial, with one mark per partner: sorting all 6n edge copies instead
-// took 1.2 s on a 2 M-tet mesh.
-std::vector<std::pair<PointId, PointId>> uniqueEdges(const TetMesh& mesh)
-{
-  const std::size_t pointCount = static_cast<std::size_t>(mesh.numberOfPoints());
-  const TetsAroundPoints around = tetsAroundPoints(mesh);
-  std::vector<std::pair<PointId, PointId>> edges;
-  edges.reserve(pointCount * 7);
-  std::vector<PointId> lastPartnerOf(pointCount, -1); // b was met as a's partner when a
-  for (std::size_t a = 0; a < pointCount; ++a)
-  {
-    const PointId low = static_cast<PointId>(a);
-    for (std::int64_t k = around.offsets[a]; k < around.offsets[a + 1]; ++k)
-    {
-      for (PointId b : mesh.tets[around.tets[k]])
-      {
-        if (b > low && lastPartnerOf[b] != low)
-        {
-          lastPartnerOf[b] = low;
-          edges.emplace_back(low, b);
-        }
-      }
-    }
-  }
-  return edges;
-}
-
-// Points per task of the edge measurement: each reads about 35 higher ends.
-constexpr std::int64_t PointsPerMeasuringRange = 8192;
-
 // The edges of a mesh by their lower end: the higher ends met from point p are
 // ends[offsets[p]] to ends[offsets[p + 1] - 1], an edge once per tet that holds it. Two walks over
-// the tets in order fill it; measuring then reads each point's ends in order. Gathering the tets
-// around each point instead cost a cache miss per tet: the merge phase, which holds the
-// measurement, took 0.34 s instead of 0.43 on the graded Big cube (1.7 M tets, 2 threads) and
-// 1.2 s instead of 1.47 on the FinFET with its size field (5.9 M tets).
+// the tets in order fill it; the gradation and the measurement then read each point's ends in
+// order. Gathering the tets around each point instead cost a cache miss per tet: the merge phase,
+// which holds the measurement, took 0.34 s instead of 0.43 on the graded Big cube (1.7 M tets, 2
+// threads) and 1.2 s instead of 1.47 on the FinFET with its size field (5.9 M tets).
 template <typename End>
 struct HigherEnds
 {
@@ -124,6 +58,35 @@ HigherEnds<End> higherEnds(const TetMesh& mesh)
   }
   return edges;
 }
+
+// Every edge of the mesh once, as (low id, high id): by low id, each low id's partners in the
+// order its tets meet them, repeats dropped with one mark per partner. Sorting all 6n edge copies
+// instead took 1.2 s on a 2 M-tet mesh.
+std::vector<std::pair<PointId, PointId>> uniqueEdges(const TetMesh& mesh)
+{
+  const std::size_t pointCount = static_cast<std::size_t>(mesh.numberOfPoints());
+  const HigherEnds<PointId> higher = higherEnds<PointId>(mesh);
+  std::vector<std::pair<PointId, PointId>> edges;
+  edges.reserve(pointCount * 7);
+  std::vector<PointId> lastPartnerOf(pointCount, -1); // b was met as a's partner when a
+  for (std::size_t a = 0; a < pointCount; ++a)
+  {
+    const PointId low = static_cast<PointId>(a);
+    for (std::int64_t k = higher.offsets[a]; k < higher.offsets[a + 1]; ++k)
+    {
+      const PointId b = higher.ends[k];
+      if (lastPartnerOf[b] != low)
+      {
+        lastPartnerOf[b] = low;
+        edges.emplace_back(low, b);
+      }
+    }
+  }
+  return edges;
+}
+
+// Points per task of the edge measurement: each reads about 35 higher ends.
+constexpr std::int64_t PointsPerMeasuringRange = 8192;
 
 // measureEdgeSizes() over the edges by lower end: ranges of points run concurrently, each
 // counting its points' distinct higher ends, and their counts are summed (the same for any
