@@ -1,6 +1,7 @@
 #include "Partitioning/PartitionGraph.h"
 
 #include <algorithm>
+#include <atomic>
 
 namespace cgmesh
 {
@@ -20,120 +21,250 @@ struct TetRun
 // Partitions whose neighbour rows one task gathers, at least.
 constexpr std::int64_t PartitionsPerRowRange = 4096;
 
-// Sorts (point, partition) pairs and drops repeats. Points are dense ids, so a counting sort by
-// point (stable) groups them, and each point's few partitions are sorted in place: the order a
-// comparison sort of all pairs gives, which took half of the graph's time at 65,536 partitions
-// of a 1.05 M-tet cube.
-void sortByPointThenPartition(std::vector<std::pair<PointId, int>>& pairs, PointId numberOfPoints)
-{
-  std::vector<std::int64_t> start(static_cast<std::size_t>(numberOfPoints) + 1, 0);
-  for (const auto& pair : pairs)
-  {
-    ++start[pair.first + 1];
-  }
-  for (PointId p = 0; p < numberOfPoints; ++p)
-  {
-    start[p + 1] += start[p];
-  }
-  // Only the partitions are placed: the point of a slot follows from `start`.
-  std::vector<int> partitions(pairs.size());
-  {
-    std::vector<std::int64_t> next(start.begin(), start.end() - 1);
-    for (const auto& pair : pairs)
-    {
-      partitions[next[pair.first]++] = pair.second;
-    }
-  }
-  std::size_t kept = 0;
-  for (PointId p = 0; p < numberOfPoints; ++p)
-  {
-    int* const first = partitions.data() + start[p];
-    int* const last = partitions.data() + start[p + 1];
-    for (int* it = first + 1; it < last; ++it) // a few entries: insertion sort
-    {
-      const int value = *it;
-      int* hole = it;
-      for (; hole > first && hole[-1] > value; --hole)
-      {
-        *hole = hole[-1];
-      }
-      *hole = value;
-    }
-    for (int* it = first; it != last; ++it)
-    {
-      if (it == first || *it != it[-1])
-      {
-        pairs[kept++] = { p, *it };
-      }
-    }
-  }
-  pairs.resize(kept);
-}
+// Tets one task of the membership scan reads, at most.
+constexpr std::size_t TetsPerScanChunk = 16384;
 
-// (point, partition) pairs for every point that lies in more than one partition, beyond the first
-// partition recorded in `firstPartition` (the partition of its first tet in run order), sorted.
-// The scan is serial: split by tets, threads race to claim points, and split by points, every
-// thread reads all tets; both measured slower than this one scan on the 844k-tet FinFET (0.28
-// against 0.14 s for its two graphs on one thread, no gain on two).
-void collectExtraMemberships(const std::vector<TetRun>& runs, PointId numberOfPoints,
-  std::vector<int>& firstPartition, std::vector<std::pair<PointId, int>>& extra)
+// Per point, a partition + 1 (0: none yet), written concurrently. Which partition a racing
+// claim records depends on the schedule; the set of partitions each point ends up with does not.
+using PartitionSlots = std::vector<std::atomic<int>>;
+
+// The partitions of every point that lies in tets of more than one: group g lists those of the
+// g-th such point in id order, sorted, as members[memberStart[g]] to members[memberStart[g + 1]].
+// The tets are scanned by chunks concurrently: the first tet to reach a point claims it for its
+// partition, and every other partition met there is kept by the chunk as a (point, partition)
+// pair. The pairs are then counted and placed per point through atomic cursors, and each point's
+// few partitions sorted, so the groups are the same for any schedule.
+Status collectInterfaceGroups(const std::vector<TetRun>& runs, PointId numberOfPoints,
+  const ParallelFor& parallelFor, std::vector<std::int64_t>& memberStart, std::vector<int>& members)
 {
-  firstPartition.assign(numberOfPoints, -1);
-  extra.clear();
-  // The partition last recorded as an extra one per point: a point's tets in one partition mostly
-  // come one after another, so this keeps most repeats out of the sort below.
-  std::vector<int> lastExtra(numberOfPoints, -1);
+  struct Chunk
+  {
+    const TetRun* run;
+    std::size_t begin, end;
+  };
+  std::vector<Chunk> chunks;
   for (const TetRun& run : runs)
   {
-    for (std::size_t t = 0; t < run.count; ++t)
+    for (std::size_t begin = 0; begin < run.count; begin += TetsPerScanChunk)
     {
-      const int partition = run.partitionOfTet ? run.partitionOfTet[t] : run.partition;
-      for (PointId p : run.tets[t])
-      {
-        if (firstPartition[p] < 0)
-        {
-          firstPartition[p] = partition;
-        }
-        else if (firstPartition[p] != partition && lastExtra[p] != partition)
-        {
-          extra.emplace_back(p, partition);
-          lastExtra[p] = partition;
-        }
-      }
+      chunks.push_back({ &run, begin, std::min(run.count, begin + TetsPerScanChunk) });
     }
   }
-  sortByPointThenPartition(extra, numberOfPoints);
+  const std::int64_t numberOfChunks = static_cast<std::int64_t>(chunks.size());
+  const std::size_t points = static_cast<std::size_t>(numberOfPoints);
+
+  // The partition last recorded as an extra one per point: a point's tets in one partition mostly
+  // come one after another, so this keeps most repeats out of the lists. A race only lets a
+  // repeat through, which the sort drops.
+  PartitionSlots lastExtra(points);
+  PartitionSlots claim(points);
+  std::vector<std::vector<std::pair<PointId, int>>> extraOfChunk(chunks.size());
+  Status status = parallelFor(numberOfChunks,
+    [&](std::int64_t c)
+    {
+      const Chunk& chunk = chunks[c];
+      std::vector<std::pair<PointId, int>>& found = extraOfChunk[c];
+      for (std::size_t t = chunk.begin; t < chunk.end; ++t)
+      {
+        const int mine =
+          (chunk.run->partitionOfTet ? chunk.run->partitionOfTet[t] : chunk.run->partition) + 1;
+        for (PointId p : chunk.run->tets[t])
+        {
+          // A failed claim leaves the recorded partition in `seen`.
+          int seen = claim[p].load(std::memory_order_relaxed);
+          if (seen == mine ||
+            (seen == 0 && claim[p].compare_exchange_strong(seen, mine, std::memory_order_relaxed)))
+          {
+            continue;
+          }
+          if (seen != mine && lastExtra[p].load(std::memory_order_relaxed) != mine)
+          {
+            lastExtra[p].store(mine, std::memory_order_relaxed);
+            found.emplace_back(p, mine - 1);
+          }
+        }
+      }
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+
+  // A counting sort by point: counts, their prefix sums by ranges of points, then every pair
+  // placed at its point's cursor. `cursor` holds the counts first, then the next free slot.
+  PartitionSlots& cursor = lastExtra;
+  status = forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        cursor[p].store(0, std::memory_order_relaxed);
+      }
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+  status = parallelFor(numberOfChunks,
+    [&](std::int64_t c)
+    {
+      for (const auto& pair : extraOfChunk[c])
+      {
+        cursor[pair.first].fetch_add(1, std::memory_order_relaxed);
+      }
+    });
+  const std::int64_t pointRanges =
+    std::max<std::int64_t>(1, (numberOfPoints + IndicesPerCopyRange - 1) / IndicesPerCopyRange);
+  std::vector<std::int64_t> rangeStart(static_cast<std::size_t>(pointRanges) + 1, 0);
+  std::vector<std::int64_t> start(points + 1, 0);
+  if (status.ok())
+  {
+    status = forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
+      [&](std::int64_t begin, std::int64_t end)
+      {
+        std::int64_t sum = 0;
+        for (std::int64_t p = begin; p < end; ++p)
+        {
+          sum += cursor[p].load(std::memory_order_relaxed);
+        }
+        rangeStart[begin / IndicesPerCopyRange + 1] = sum;
+      });
+  }
+  for (std::int64_t r = 0; r < pointRanges; ++r)
+  {
+    rangeStart[r + 1] += rangeStart[r];
+  }
+  if (status.ok())
+  {
+    status = forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
+      [&](std::int64_t begin, std::int64_t end)
+      {
+        std::int64_t next = rangeStart[begin / IndicesPerCopyRange];
+        for (std::int64_t p = begin; p < end; ++p)
+        {
+          start[p] = next;
+          next += cursor[p].load(std::memory_order_relaxed);
+          cursor[p].store(static_cast<int>(start[p] - rangeStart[begin / IndicesPerCopyRange]),
+            std::memory_order_relaxed);
+        }
+        start[end] = next;
+      });
+  }
+  // Only the partitions are placed: the point of a slot follows from `start`. The cursors count
+  // from their range's start so that they fit an int.
+  std::vector<int> partitions(static_cast<std::size_t>(rangeStart.back()));
+  if (status.ok())
+  {
+    status = parallelFor(numberOfChunks,
+      [&](std::int64_t c)
+      {
+        for (const auto& pair : extraOfChunk[c])
+        {
+          const std::int64_t slot = rangeStart[pair.first / IndicesPerCopyRange] +
+            cursor[pair.first].fetch_add(1, std::memory_order_relaxed);
+          partitions[static_cast<std::size_t>(slot)] = pair.second;
+        }
+        extraOfChunk[c] = {};
+      });
+  }
+  if (!status.ok())
+  {
+    return status;
+  }
+
+  // Each point's few other partitions sorted in place (insertion sort) and repeats dropped; then
+  // the groups are written by ranges of points at their range's offsets, the claimed partition
+  // put in its place among the others.
+  std::vector<std::int64_t> groupsOfRange(static_cast<std::size_t>(pointRanges) + 1, 0);
+  std::vector<std::int64_t> membersOfRange(static_cast<std::size_t>(pointRanges) + 1, 0);
+  std::vector<int> others(points, 0);
+  status = forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      std::int64_t groups = 0, memberCount = 0;
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        int* const first = partitions.data() + start[p];
+        int* const last = partitions.data() + start[p + 1];
+        for (int* it = first + 1; it < last; ++it)
+        {
+          const int value = *it;
+          int* hole = it;
+          for (; hole > first && hole[-1] > value; --hole)
+          {
+            *hole = hole[-1];
+          }
+          *hole = value;
+        }
+        others[p] = static_cast<int>(std::unique(first, last) - first);
+        groups += others[p] > 0;
+        memberCount += others[p] > 0 ? others[p] + 1 : 0;
+      }
+      groupsOfRange[begin / IndicesPerCopyRange + 1] = groups;
+      membersOfRange[begin / IndicesPerCopyRange + 1] = memberCount;
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+  for (std::int64_t r = 0; r < pointRanges; ++r)
+  {
+    groupsOfRange[r + 1] += groupsOfRange[r];
+    membersOfRange[r + 1] += membersOfRange[r];
+  }
+  memberStart.assign(static_cast<std::size_t>(groupsOfRange.back()) + 1, 0);
+  memberStart.back() = membersOfRange.back();
+  members.resize(static_cast<std::size_t>(membersOfRange.back()));
+  return forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      std::int64_t group = groupsOfRange[begin / IndicesPerCopyRange];
+      std::int64_t out = membersOfRange[begin / IndicesPerCopyRange];
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        if (others[p] == 0)
+        {
+          continue;
+        }
+        memberStart[static_cast<std::size_t>(group++)] = out;
+        const int claimed = claim[p].load(std::memory_order_relaxed) - 1;
+        const int* it = partitions.data() + start[p];
+        const int* const last = it + others[p];
+        for (; it != last && *it < claimed; ++it)
+        {
+          members[static_cast<std::size_t>(out++)] = *it;
+        }
+        members[static_cast<std::size_t>(out++)] = claimed;
+        for (; it != last; ++it)
+        {
+          members[static_cast<std::size_t>(out++)] = *it;
+        }
+      }
+    });
 }
 
 // The graph of the partitions the runs' tets belong to.
 Status buildGraphOfRuns(const std::vector<TetRun>& runs, int numberOfPartitions,
   PointId numberOfPoints, const ParallelFor& parallelFor, PartitionGraph& graph)
 {
-  std::vector<int> firstPartition;
-  std::vector<std::pair<PointId, int>> extra;
-  collectExtraMemberships(runs, numberOfPoints, firstPartition, extra);
+  std::vector<std::int64_t> memberStart;
+  std::vector<int> members;
+  Status status = collectInterfaceGroups(runs, numberOfPoints, parallelFor, memberStart, members);
+  if (!status.ok())
+  {
+    return status;
+  }
 
-  // One group per interface point: its first partition and its run of `extra`. Then, per
-  // partition, the groups it belongs to (compressed rows), and its neighbours are the other
+  // Per partition, the groups it belongs to (compressed rows); its neighbours are the other
   // members of those groups, gathered with a stamp per partition. No global sort of the pairs:
   // with many small partitions every point is shared by several, and sorting their pairs took
   // most of the graph's time (65,536 parts of a 1.05 M-tet cube).
-  std::vector<std::size_t> groupStart;
-  for (std::size_t i = 0; i < extra.size(); ++i)
-  {
-    if (i == 0 || extra[i].first != extra[i - 1].first)
-    {
-      groupStart.push_back(i);
-    }
-  }
-  const std::size_t groups = groupStart.size();
-  groupStart.push_back(extra.size());
+  const std::size_t groups = memberStart.size() - 1;
   auto forEachMember = [&](std::size_t g, auto&& visit)
   {
-    visit(firstPartition[extra[groupStart[g]].first]);
-    for (std::size_t i = groupStart[g]; i < groupStart[g + 1]; ++i)
+    for (std::int64_t i = memberStart[g]; i < memberStart[g + 1]; ++i)
     {
-      visit(extra[i].second);
+      visit(members[static_cast<std::size_t>(i)]);
     }
   };
   std::vector<std::int64_t> groupsOfPartition(static_cast<std::size_t>(numberOfPartitions) + 1, 0);
@@ -162,7 +293,7 @@ Status buildGraphOfRuns(const std::vector<TetRun>& runs, int numberOfPartitions,
   const std::int64_t ranges = (numberOfPartitions + rangeSize - 1) / rangeSize;
   std::vector<std::vector<int>> rowsOfRange(ranges);
   std::vector<std::int64_t> rowLength(static_cast<std::size_t>(numberOfPartitions), 0);
-  const Status status = forEachRange(parallelFor, numberOfPartitions, rangeSize,
+  status = forEachRange(parallelFor, numberOfPartitions, rangeSize,
     [&](std::int64_t begin, std::int64_t end)
     {
       std::vector<int>& rows = rowsOfRange[begin / rangeSize];
