@@ -11,11 +11,12 @@ where makespan is greedy list scheduling with the longest task first (LPT) on T 
 `serial` is the seconds that run on one thread, counted once, and `rest` is the remainder of the
 measured total (whatever of adapt lies outside the tasks included) taken as perfectly parallel.
 
-`serial` is measured where a 2-thread run of the same configuration is given: per phase,
-Amdahl's law t(T) = s + p / T through the 1- and 2-thread seconds gives s = 2 t(2) - t(1),
-clamped to [0, t(1)] (the colour loop's adapt phase is left to the task model). Without one, the
-phases that have serial parts (SERIAL_PHASES) count as serial whole. With T = 1 the model gives
-back the measured total exactly.
+`serial` is measured where runs of the same configuration at more threads are given: per
+phase, Amdahl's law t(T) = s + p / T is fitted to the seconds of every given thread count by least
+squares in 1/T (with the 1- and 2-thread runs alone that is s = 2 t(2) - t(1)), s clamped to
+[0, t(1)] (the colour loop's adapt phase is left to the task model). A fit through many thread
+counts is not thrown by one noisy run. Without them, the phases that have serial parts
+(SERIAL_PHASES) count as serial whole. With T = 1 the model gives back the measured total exactly.
 """
 import heapq
 
@@ -23,12 +24,31 @@ SERIAL_PHASES = ("prepare", "partition", "graph", "color", "post", "merge", "inp
 NOT_PHASES = ("total", "read", "write", "adapt")
 
 
-def serial_seconds(seconds, seconds_at_2):
-    """Seconds on one thread: the Amdahl fit per phase with a 2-thread run, else SERIAL_PHASES."""
-    if seconds_at_2 is None:
+def amdahl_serial(points):
+    """Serial part s of t(T) = s + p / T fitted by least squares to (threads, seconds) points."""
+    xs = [1.0 / threads for threads, _ in points]
+    ys = [seconds for _, seconds in points]
+    mean_x, mean_y = sum(xs) / len(xs), sum(ys) / len(ys)
+    spread = sum((x - mean_x) ** 2 for x in xs)
+    if spread == 0.0:
+        return mean_y
+    slope = sum((x - mean_x) * (y - mean_y) for x, y in zip(xs, ys)) / spread
+    return mean_y - slope * mean_x
+
+
+def serial_seconds(seconds, more=()):
+    """Seconds on one thread: the Amdahl fit per phase through the 1-thread `seconds` and the
+    (threads, seconds) of `more` runs, else SERIAL_PHASES whole."""
+    if not more:
         return sum(seconds.get(phase, 0.0) for phase in SERIAL_PHASES)
-    return sum(min(seconds[phase], max(0.0, 2.0 * seconds_at_2.get(phase, 0.0) - seconds[phase]))
-               for phase in seconds if phase not in NOT_PHASES)
+    total = 0.0
+    for phase in seconds:
+        if phase in NOT_PHASES:
+            continue
+        points = [(1, seconds[phase])] + [(threads, other.get(phase, 0.0))
+                                          for threads, other in more]
+        total += min(seconds[phase], max(0.0, amdahl_serial(points)))
+    return total
 
 
 def lpt_makespan(tasks, threads):
@@ -58,11 +78,11 @@ def colour_groups(task_seconds, colour_of_partition, partitions):
     return groups
 
 
-def simulate(stats, thread_counts, stats_at_2=None):
+def simulate(stats, thread_counts, more_runs=()):
     """Model of one run (its stats JSON, normally the 1-thread run): a dict with the serial,
     task and rest seconds and, per thread count, the modelled seconds and speedup over the
-    measured total. `stats_at_2`, the same configuration's 2-thread run, measures the serial
-    seconds. None when the stats lack the per-partition task times."""
+    measured total. `more_runs`, the stats of the same configuration at more threads, measure
+    the serial seconds. None when the stats lack the per-partition task times."""
     tasks = stats.get("partitionTaskSeconds")
     colours = stats.get("colorOfPartition")
     if not tasks or not colours:
@@ -70,12 +90,15 @@ def simulate(stats, thread_counts, stats_at_2=None):
     seconds = stats["seconds"]
     partitions = len(colours)
     groups = colour_groups(tasks, colours, partitions)
-    serial = serial_seconds(seconds, stats_at_2["seconds"] if stats_at_2 else None)
+    more = [(run.get("threads", 1), run["seconds"]) for run in more_runs
+            if run.get("threads", 1) > 1]
+    serial = serial_seconds(seconds, more)
     task_total = float(sum(tasks))
     rest = max(0.0, seconds["total"] - serial - task_total)
     measured_threads = stats.get("threads", 1)
     model = {"measuredThreads": measured_threads, "measuredTotal": seconds["total"],
-             "serialMeasured": stats_at_2 is not None,
+             "serialMeasured": bool(more),
+             "serialFitThreads": [1] + [threads for threads, _ in more],
              "serialSeconds": serial, "taskSeconds": task_total, "restSeconds": rest,
              "longestTask": max(tasks), "steps": len(groups), "threads": {}}
     for threads in thread_counts:
