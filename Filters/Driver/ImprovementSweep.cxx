@@ -53,7 +53,8 @@ Status improveOverBoxes(const ColorLoopSetup& setup, const AdaptationOptions& op
     candidates = 0;
     return status; // nothing near a former interface needs work
   }
-  const BoxLayout layout = layBoxes(state.coordinates, cells, 0.5 * sweepIndex);
+  const BoxLayout layout =
+    layBoxes(state.coordinates, cells, 0.5 * sweepIndex, parallelForOn(setup.threads));
   ColorLoopSetup sweep = setup;
   sweep.refine = false;
   sweep.improve = true;

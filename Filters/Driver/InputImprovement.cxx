@@ -2,6 +2,7 @@
 
 #include "ImprovementSweep.h"
 #include "ParallelFor.h"
+#include "Partitioning/BoxPartitions.h"
 #include "Refinement/PartitionRefiner.h"
 #include "RemeshSweep.h"
 
@@ -11,19 +12,14 @@ namespace
 {
 
 // Every tet to the partition of the input cell it comes from, in (box, tet) order.
-void returnTetsToPartitions(
-  AdaptationState& state, const std::vector<int>& partitionOfCell, int partitions)
+Status returnTetsToPartitions(
+  AdaptationState& state, const std::vector<int>& partitionOfCell, int partitions, int threads)
 {
-  std::vector<PartitionMesh> returned(static_cast<std::size_t>(partitions));
-  for (PartitionMesh& from : state.partitions)
-  {
-    for (std::size_t t = 0; t < from.tets.size(); ++t)
-    {
-      appendTetOf(from, t, returned[partitionOfCell[from.parentCells[t]]]);
-    }
-    from = PartitionMesh();
-  }
+  std::vector<PartitionMesh> returned;
+  const Status status = regroupByCellPartition(
+    state.partitions, partitionOfCell, partitions, parallelForOn(threads), returned);
   state.partitions = std::move(returned);
+  return status;
 }
 
 // Meshes the whole input anew in one TetGen call (pAMQnq): from its boundary and material
@@ -156,7 +152,11 @@ Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>
         0.6, 1, options, partitionOfCell, graph, setup, state, summary, reporter);
     }
     // TetGen failed on the whole input: its tets went back unchanged; around the slivers below.
-    returnTetsToPartitions(state, partitionOfCell, summary.plan.partitions);
+    status = returnTetsToPartitions(state, partitionOfCell, summary.plan.partitions, setup.threads);
+    if (!status.ok())
+    {
+      return status;
+    }
   }
   // The interface rounds first, as refinement makes them: TetGen keeps the boundary and material
   // interface triangles it is given, and tets resting on the input's large ones stay slivers
@@ -202,11 +202,16 @@ Status returnToInputPartitions(const AdaptationOptions& options,
   const std::vector<int>& partitionOfCell, PartitionGraph& graph, ColorLoopSetup& setup,
   AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter, double progress)
 {
-  returnTetsToPartitions(state, partitionOfCell, summary.plan.partitions);
+  Status status =
+    returnTetsToPartitions(state, partitionOfCell, summary.plan.partitions, setup.threads);
+  if (!status.ok())
+  {
+    return status;
+  }
 
   reporter.enter(Phase::Graph);
-  Status status = buildPartitionGraph(state.partitions,
-    static_cast<PointId>(state.coordinates.size() / 3), parallelForOn(setup.threads), graph);
+  status = buildPartitionGraph(state.partitions, static_cast<PointId>(state.coordinates.size() / 3),
+    parallelForOn(setup.threads), graph);
   if (!status.ok())
   {
     return status;

@@ -106,7 +106,8 @@ Status remeshAroundSlivers(const ColorLoopSetup& sweep, const AdaptationOptions&
   {
     return status;
   }
-  const BoxLayout layout = layBoxes(state.coordinates, boxesPerAxis, 0);
+  const BoxLayout layout =
+    layBoxes(state.coordinates, boxesPerAxis, 0, parallelForOn(sweep.threads));
   const std::vector<std::size_t> boxOfPoint = boxOfClusters(state, moving, layout);
   std::size_t boxes = 0;
   return runSweepOverBoxes(

@@ -2,7 +2,8 @@
 // same result on every call, and without contiguity as with it. The Hilbert curve: a path through
 // every grid cell once, each step to a face neighbour; its partitions: equal runs. Box partitions
 // of the improvement sweeps: every tet in one box (or settled) in the order a serial pass gives,
-// whatever the schedule, the others left in place, and a box graph holding every pair of boxes that
+// whatever the schedule, the others left in place, the way back to the cells' partitions in that
+// order too, and a box graph holding every pair of boxes that
 // share a point. The face table every face search uses: each face once, with the first two tets
 // that hold it and their count.
 #include "Core/FaceKey.h"
@@ -250,6 +251,43 @@ void test_box_regrouping_keeps_every_tet_in_serial_order()
   }
 }
 
+// The way back from boxes: every tet to the partition of its input cell, in the order a serial
+// pass appends them, for any schedule. 24^3 * 6 tets in 29 boxes make more than one range of
+// tets, and ranges that start inside a box and run across several.
+void test_regrouping_by_cell_partition_keeps_serial_order()
+{
+  TetMesh mesh;
+  const std::vector<PartitionMesh> boxes = jitteredCubePartitions(24, 29, mesh);
+  const int partitions = 13;
+  std::vector<int> partitionOfCell(mesh.tets.size());
+  for (std::size_t t = 0; t < partitionOfCell.size(); ++t)
+  {
+    partitionOfCell[t] = static_cast<int>((t * 7919 + t / 5000) % partitions);
+  }
+  std::vector<PartitionMesh> expected(partitions);
+  for (const PartitionMesh& box : boxes)
+  {
+    for (std::size_t t = 0; t < box.tets.size(); ++t)
+    {
+      appendTetOf(box, t, expected[partitionOfCell[box.parentCells[t]]]);
+    }
+  }
+  for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
+  {
+    std::vector<PartitionMesh> from = boxes, regrouped;
+    CHECK(regroupByCellPartition(from, partitionOfCell, partitions, parallelFor, regrouped).ok());
+    CHECK_EQUAL(regrouped.size(), expected.size());
+    for (std::size_t p = 0; p < std::min(regrouped.size(), expected.size()); ++p)
+    {
+      CHECK(regrouped[p].tets == expected[p].tets);
+      CHECK(regrouped[p].parentCells == expected[p].parentCells);
+      CHECK(regrouped[p].regions == expected[p].regions);
+    }
+    CHECK(std::all_of(from.begin(), from.end(),
+      [](const PartitionMesh& partition) { return partition.tets.empty(); }));
+  }
+}
+
 // Every pair of boxes sharing a point is an edge of the box graph; rows sorted and symmetric.
 void checkHoldsExactGraph(
   const std::vector<PartitionMesh>& boxes, const TetMesh& mesh, const PartitionGraph& graph)
@@ -375,6 +413,7 @@ int main()
   test_parallel_sort_matches_sort();
   test_hilbert_partitions_are_equal_runs();
   test_box_regrouping_keeps_every_tet_in_serial_order();
+  test_regrouping_by_cell_partition_keeps_serial_order();
   test_box_graph_holds_every_shared_point();
   test_distinct_faces_match_a_map();
   return cgmesh_test::finish("TestPartitioning");

@@ -53,17 +53,39 @@ std::size_t BoxLayout::boxOf(const Tet& tet, const std::vector<double>& coordina
   return this->boxAt(this->indexOf(centroid));
 }
 
-BoxLayout layBoxes(const std::vector<double>& coordinates, int cells, double shift)
+BoxLayout layBoxes(
+  const std::vector<double>& coordinates, int cells, double shift, const ParallelFor& parallelFor)
 {
+  // Each range of points keeps its own bounds; min and max do not care how they are joined.
+  using Bounds = std::array<double, 6>; // low x, y, z, high x, y, z
+  constexpr double Largest = std::numeric_limits<double>::max();
+  const std::int64_t points = static_cast<std::int64_t>(coordinates.size() / 3);
+  std::vector<Bounds> boundsOfRange(
+    static_cast<std::size_t>((points + IndicesPerCopyRange - 1) / IndicesPerCopyRange),
+    Bounds{ Largest, Largest, Largest, -Largest, -Largest, -Largest });
+  // The body neither allocates nor throws, so the runner has no failure to report.
+  forEachRange(parallelFor, points, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      Bounds& bounds = boundsOfRange[begin / IndicesPerCopyRange];
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          bounds[axis] = std::min(bounds[axis], coordinates[3 * p + axis]);
+          bounds[3 + axis] = std::max(bounds[3 + axis], coordinates[3 * p + axis]);
+        }
+      }
+    });
   BoxLayout layout;
   layout.cells = std::max(1, cells);
   for (int axis = 0; axis < 3; ++axis)
   {
-    double lowest = std::numeric_limits<double>::max(), highest = -lowest;
-    for (std::size_t p = axis; p < coordinates.size(); p += 3)
+    double lowest = Largest, highest = -Largest;
+    for (const Bounds& bounds : boundsOfRange)
     {
-      lowest = std::min(lowest, coordinates[p]);
-      highest = std::max(highest, coordinates[p]);
+      lowest = std::min(lowest, bounds[axis]);
+      highest = std::max(highest, bounds[3 + axis]);
     }
     layout.size[axis] = highest > lowest ? (highest - lowest) / layout.cells : 1.0;
     layout.low[axis] = lowest - shift * layout.size[axis];
@@ -285,6 +307,88 @@ Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
       keepStaying(partitions[p], moving[p]);
       moving[p] = MovingTets();
     });
+}
+
+Status regroupByCellPartition(std::vector<PartitionMesh>& partitions,
+  const std::vector<int>& partitionOfCell, int numberOfPartitions, const ParallelFor& parallelFor,
+  std::vector<PartitionMesh>& regrouped)
+{
+  // The tets of all partitions, one after another, in ranges of IndicesPerCopyRange: a range
+  // counts its tets per destination, the counts' running sums in range order give each range its
+  // place in every destination, and the ranges copy concurrently (a stable counting sort).
+  const bool withRegions = std::any_of(partitions.begin(), partitions.end(),
+    [](const PartitionMesh& partition) { return !partition.regions.empty(); });
+  std::vector<std::int64_t> firstTet(partitions.size() + 1, 0);
+  for (std::size_t p = 0; p < partitions.size(); ++p)
+  {
+    firstTet[p + 1] = firstTet[p] + static_cast<std::int64_t>(partitions[p].tets.size());
+  }
+  const std::int64_t tets = firstTet.back();
+  const std::size_t destinations = static_cast<std::size_t>(numberOfPartitions);
+  const std::int64_t ranges = (tets + IndicesPerCopyRange - 1) / IndicesPerCopyRange;
+  // Calls visit(partition, tet) for the tets of range `range`, in order.
+  auto forEachTetOfRange = [&](std::int64_t range, auto&& visit)
+  {
+    const std::int64_t begin = range * IndicesPerCopyRange;
+    const std::int64_t end = std::min(tets, begin + IndicesPerCopyRange);
+    std::size_t p = static_cast<std::size_t>(
+      std::upper_bound(firstTet.begin(), firstTet.end(), begin) - firstTet.begin() - 1);
+    for (std::int64_t i = begin; i < end; ++i)
+    {
+      while (i == firstTet[p + 1])
+      {
+        ++p;
+      }
+      visit(partitions[p], static_cast<std::size_t>(i - firstTet[p]));
+    }
+  };
+  std::vector<std::int64_t> place(static_cast<std::size_t>(ranges) * destinations, 0);
+  Status status = parallelFor(ranges,
+    [&](std::int64_t range)
+    {
+      std::int64_t* const count = place.data() + range * numberOfPartitions;
+      forEachTetOfRange(range,
+        [&](const PartitionMesh& from, std::size_t t)
+        { ++count[partitionOfCell[from.parentCells[t]]]; });
+    });
+  if (!status.ok())
+  {
+    return status;
+  }
+  std::vector<std::int64_t> size(destinations, 0);
+  for (std::int64_t range = 0; range < ranges; ++range)
+  {
+    for (std::size_t d = 0; d < destinations; ++d)
+    {
+      const std::int64_t count = place[range * numberOfPartitions + d];
+      place[range * numberOfPartitions + d] = size[d];
+      size[d] += count;
+    }
+  }
+  regrouped.assign(destinations, PartitionMesh());
+  status = parallelFor(numberOfPartitions,
+    [&](std::int64_t d)
+    { resizeMesh(regrouped[d], static_cast<std::size_t>(size[d]), withRegions); });
+  if (status.ok())
+  {
+    status = parallelFor(ranges,
+      [&](std::int64_t range)
+      {
+        std::int64_t* const next = place.data() + range * numberOfPartitions;
+        forEachTetOfRange(range,
+          [&](const PartitionMesh& from, std::size_t t)
+          {
+            const int d = partitionOfCell[from.parentCells[t]];
+            copyTetTo(from, t, regrouped[d], static_cast<std::size_t>(next[d]++));
+          });
+      });
+  }
+  if (!status.ok())
+  {
+    return status;
+  }
+  return parallelFor(static_cast<std::int64_t>(partitions.size()),
+    [&](std::int64_t p) { partitions[p] = PartitionMesh(); });
 }
 
 namespace

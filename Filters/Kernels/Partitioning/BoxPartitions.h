@@ -38,8 +38,9 @@ struct BoxLayout
 
 // `cells` boxes per axis over the bounding box of `coordinates`, moved back by `shift` boxes (0:
 // from the bounding box's corner; 0.5: by half a box, so that the first layout's box faces lie
-// inside boxes).
-BoxLayout layBoxes(const std::vector<double>& coordinates, int cells, double shift);
+// inside boxes). The bounding box is found by ranges of points on `parallelFor`.
+BoxLayout layBoxes(const std::vector<double>& coordinates, int cells, double shift,
+  const ParallelFor& parallelFor = runSerially);
 
 // Moves the tets of `partitions` into the boxes of `layout` (`boxes`), each into the box of its
 // centroid. With `movingIfFlagged`, only the tets that touch a flagged point move, and the others
@@ -51,6 +52,13 @@ Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
   std::vector<PartitionMesh>& boxes, const std::vector<char>* movingIfFlagged = nullptr,
   const std::vector<std::size_t>* boxOfFlaggedPoint = nullptr);
+
+// Moves every tet of `partitions` into `regrouped[partitionOfCell[parentCell]]`, in (source
+// partition, tet) order as a serial pass would append them, and empties `partitions`: the way
+// back from boxes to the partitions of the input cells. Counted and copied by ranges of the tets.
+Status regroupByCellPartition(std::vector<PartitionMesh>& partitions,
+  const std::vector<int>& partitionOfCell, int numberOfPartitions, const ParallelFor& parallelFor,
+  std::vector<PartitionMesh>& regrouped);
 
 // The boxes' partition graph, for colouring: two boxes are neighbours when the bounding boxes of
 // their tets' corners meet. Boxes that share a point always do, so the graph holds every edge of
