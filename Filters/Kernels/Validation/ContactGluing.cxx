@@ -4,6 +4,7 @@
 #include "Core/Geometry.h"
 #include "Core/LowestRootSets.h"
 #include "Core/ParallelSort.h"
+#include "Core/UsedPoints.h"
 
 #include <algorithm>
 #include <array>
@@ -15,27 +16,6 @@ namespace cgmesh
 {
 namespace
 {
-
-std::vector<PointId> usedPoints(const TetMesh& mesh)
-{
-  std::vector<char> used(mesh.numberOfPoints(), 0);
-  for (const Tet& tet : mesh.tets)
-  {
-    for (PointId p : tet)
-    {
-      used[p] = 1;
-    }
-  }
-  std::vector<PointId> ids;
-  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
-  {
-    if (used[p])
-    {
-      ids.push_back(p);
-    }
-  }
-  return ids;
-}
 
 // Pairs (p, q), p < q, of used points at most `tolerance` apart, in ascending order. Points are
 // bucketed in a grid whose cells are 100 tolerances wide: small against any edge worth refining,
@@ -329,10 +309,11 @@ void joinMatchingFaces(
 Status glueMatchingFaces(TetMesh& mesh, const ParallelFor& parallelFor, ContactGluing& outcome)
 {
   outcome = ContactGluing();
-  const std::vector<PointId> used = usedPoints(mesh);
-  if (used.empty())
+  std::vector<PointId> used;
+  Status status = listUsedPoints(mesh, parallelFor, used);
+  if (!status.ok() || used.empty())
   {
-    return Status::success();
+    return status;
   }
   double low[3], high[3];
   for (int axis = 0; axis < 3; ++axis)
@@ -354,7 +335,7 @@ Status glueMatchingFaces(TetMesh& mesh, const ParallelFor& parallelFor, ContactG
   }
 
   std::vector<std::pair<PointId, PointId>> pairs;
-  const Status status = coincidentPairs(mesh, used, low, outcome.tolerance, parallelFor, pairs);
+  status = coincidentPairs(mesh, used, low, outcome.tolerance, parallelFor, pairs);
   if (!status.ok() || pairs.empty())
   {
     return status; // or nothing coincides: every point is its own root

@@ -1,6 +1,7 @@
 #include "Validation/InputPreparation.h"
 
 #include "Core/Geometry.h"
+#include "Core/UsedPoints.h"
 #include "Validation/ContactGluing.h"
 
 #include <algorithm>
@@ -11,24 +12,44 @@ namespace cgmesh
 namespace
 {
 
-Status checkCoordinates(const TetMesh& mesh)
+// Refuses used points with NaN or infinite coordinates. Ranges of points are checked
+// concurrently and their counts added in range order.
+Status checkCoordinates(const TetMesh& mesh, const ParallelFor& parallelFor)
 {
-  std::vector<char> used(mesh.numberOfPoints(), 0);
-  for (const Tet& tet : mesh.tets)
+  PointMarks used;
+  Status status = markUsedPoints(mesh, parallelFor, used);
+  struct Counts
   {
-    for (PointId p : tet)
-    {
-      used[p] = 1;
-    }
+    PointId nonFinite = 0, first = -1;
+  };
+  std::vector<Counts> countsOfRange(
+    (mesh.numberOfPoints() + IndicesPerCopyRange - 1) / IndicesPerCopyRange);
+  if (status.ok())
+  {
+    status = forEachRange(parallelFor, mesh.numberOfPoints(), IndicesPerCopyRange,
+      [&](std::int64_t begin, std::int64_t end)
+      {
+        Counts& counts = countsOfRange[begin / IndicesPerCopyRange];
+        for (PointId p = begin; p < end; ++p)
+        {
+          const double* x = mesh.point(p);
+          if (used[p].load(std::memory_order_relaxed) &&
+            !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+          {
+            counts.first = counts.nonFinite++ == 0 ? p : counts.first;
+          }
+        }
+      });
+  }
+  if (!status.ok())
+  {
+    return status;
   }
   PointId nonFinite = 0, first = -1;
-  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  for (const Counts& counts : countsOfRange)
   {
-    const double* x = mesh.point(p);
-    if (used[p] && !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
-    {
-      first = nonFinite++ == 0 ? p : first;
-    }
+    first = nonFinite == 0 ? counts.first : first;
+    nonFinite += counts.nonFinite;
   }
   if (nonFinite > 0)
   {
@@ -37,6 +58,20 @@ Status checkCoordinates(const TetMesh& mesh)
         std::to_string(first) + ")");
   }
   return Status::success();
+}
+
+// A copy of `input` whose tets, the bulk of it, are copied by ranges: a serial copy of the
+// FinFET's 844k tets took 16 ms at any thread count.
+Status copyMesh(const TetMesh& input, TetMesh& copy, const ParallelFor& parallelFor)
+{
+  copy.coordinates = input.coordinates;
+  copy.regions = input.regions;
+  copy.sizes = input.sizes;
+  copy.tets.resize(input.tets.size());
+  return forEachRange(parallelFor, input.numberOfTets(), IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end) {
+      std::copy(input.tets.begin() + begin, input.tets.begin() + end, copy.tets.begin() + begin);
+    });
 }
 
 // Reorients inverted tets; refuses tets whose volume is zero relative to their size. Ranges of
@@ -101,8 +136,11 @@ Status prepareInput(
   const TetMesh& input, TetMesh& prepared, InputRepairs& repairs, const ParallelFor& parallelFor)
 {
   repairs = InputRepairs();
-  prepared = input;
-  Status status = checkCoordinates(prepared);
+  Status status = copyMesh(input, prepared, parallelFor);
+  if (status.ok())
+  {
+    status = checkCoordinates(prepared, parallelFor);
+  }
   if (!status.ok())
   {
     return status;

@@ -1,0 +1,84 @@
+// The points a mesh's tets use, found by ranges of tets on a ParallelFor: input checks and the
+// contact search look only at those, and at millions of tets a serial scan of them was a fixed
+// cost of every run whatever the thread count.
+#ifndef cgmesh_UsedPoints_h
+#define cgmesh_UsedPoints_h
+
+#include "Core/Tasks.h"
+#include "Core/TetMesh.h"
+
+#include <atomic>
+#include <vector>
+
+namespace cgmesh
+{
+
+// A mark per point, 1 where some tet uses it. Ranges of tets mark concurrently: every order of
+// the stores gives the same marks.
+using PointMarks = std::vector<std::atomic<unsigned char>>;
+
+inline Status markUsedPoints(const TetMesh& mesh, const ParallelFor& parallelFor, PointMarks& used)
+{
+  used = PointMarks(static_cast<std::size_t>(mesh.numberOfPoints()));
+  return forEachRange(parallelFor, mesh.numberOfTets(), IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (std::int64_t t = begin; t < end; ++t)
+      {
+        for (PointId p : mesh.tets[t])
+        {
+          used[p].store(1, std::memory_order_relaxed);
+        }
+      }
+    });
+}
+
+// The ids of the used points in ascending order: counted by ranges of points, then written at
+// their range's offset.
+inline Status listUsedPoints(
+  const TetMesh& mesh, const ParallelFor& parallelFor, std::vector<PointId>& ids)
+{
+  PointMarks used;
+  Status status = markUsedPoints(mesh, parallelFor, used);
+  const std::int64_t points = mesh.numberOfPoints();
+  std::vector<std::int64_t> firstOfRange(
+    static_cast<std::size_t>((points + IndicesPerCopyRange - 1) / IndicesPerCopyRange) + 1, 0);
+  if (status.ok())
+  {
+    status = forEachRange(parallelFor, points, IndicesPerCopyRange,
+      [&](std::int64_t begin, std::int64_t end)
+      {
+        std::int64_t count = 0;
+        for (std::int64_t p = begin; p < end; ++p)
+        {
+          count += used[p].load(std::memory_order_relaxed);
+        }
+        firstOfRange[begin / IndicesPerCopyRange + 1] = count;
+      });
+  }
+  if (!status.ok())
+  {
+    return status;
+  }
+  for (std::size_t r = 1; r < firstOfRange.size(); ++r)
+  {
+    firstOfRange[r] += firstOfRange[r - 1];
+  }
+  ids.resize(static_cast<std::size_t>(firstOfRange.back()));
+  return forEachRange(parallelFor, points, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      std::int64_t next = firstOfRange[begin / IndicesPerCopyRange];
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        if (used[p].load(std::memory_order_relaxed))
+        {
+          ids[static_cast<std::size_t>(next++)] = p;
+        }
+      }
+    });
+}
+
+} // namespace cgmesh
+
+#endif
