@@ -13,14 +13,14 @@
 namespace cgmesh
 {
 
-// A mark per point, 1 where some tet uses it. Ranges of tets mark concurrently: every order of
-// the stores gives the same marks.
-using PointMarks = std::vector<std::atomic<unsigned char>>;
-
-inline Status markUsedPoints(const TetMesh& mesh, const ParallelFor& parallelFor, PointMarks& used)
+// The ids of the used points in ascending order. Ranges of tets mark the points concurrently
+// (every order of the stores gives the same marks); the marks are counted by ranges of points,
+// then the ids written at their range's offset.
+inline Status listUsedPoints(
+  const TetMesh& mesh, const ParallelFor& parallelFor, std::vector<PointId>& ids)
 {
-  used = PointMarks(static_cast<std::size_t>(mesh.numberOfPoints()));
-  return forEachRange(parallelFor, mesh.numberOfTets(), IndicesPerCopyRange,
+  std::vector<std::atomic<unsigned char>> used(static_cast<std::size_t>(mesh.numberOfPoints()));
+  Status status = forEachRange(parallelFor, mesh.numberOfTets(), IndicesPerCopyRange,
     [&](std::int64_t begin, std::int64_t end)
     {
       for (std::int64_t t = begin; t < end; ++t)
@@ -31,15 +31,6 @@ inline Status markUsedPoints(const TetMesh& mesh, const ParallelFor& parallelFor
         }
       }
     });
-}
-
-// The ids of the used points in ascending order: counted by ranges of points, then written at
-// their range's offset.
-inline Status listUsedPoints(
-  const TetMesh& mesh, const ParallelFor& parallelFor, std::vector<PointId>& ids)
-{
-  PointMarks used;
-  Status status = markUsedPoints(mesh, parallelFor, used);
   const std::int64_t points = mesh.numberOfPoints();
   std::vector<std::int64_t> firstOfRange(
     static_cast<std::size_t>((points + IndicesPerCopyRange - 1) / IndicesPerCopyRange) + 1, 0);

@@ -4,7 +4,6 @@
 #include "Core/Geometry.h"
 #include "Core/LowestRootSets.h"
 #include "Core/ParallelSort.h"
-#include "Core/UsedPoints.h"
 
 #include <algorithm>
 #include <array>
@@ -306,14 +305,13 @@ void joinMatchingFaces(
 
 } // namespace
 
-Status glueMatchingFaces(TetMesh& mesh, const ParallelFor& parallelFor, ContactGluing& outcome)
+Status glueMatchingFaces(TetMesh& mesh, const std::vector<PointId>& used,
+  const ParallelFor& parallelFor, ContactGluing& outcome)
 {
   outcome = ContactGluing();
-  std::vector<PointId> used;
-  Status status = listUsedPoints(mesh, parallelFor, used);
-  if (!status.ok() || used.empty())
+  if (used.empty())
   {
-    return status;
+    return Status::success();
   }
   double low[3], high[3];
   for (int axis = 0; axis < 3; ++axis)
@@ -335,7 +333,7 @@ Status glueMatchingFaces(TetMesh& mesh, const ParallelFor& parallelFor, ContactG
   }
 
   std::vector<std::pair<PointId, PointId>> pairs;
-  status = coincidentPairs(mesh, used, low, outcome.tolerance, parallelFor, pairs);
+  const Status status = coincidentPairs(mesh, used, low, outcome.tolerance, parallelFor, pairs);
   if (!status.ok() || pairs.empty())
   {
     return status; // or nothing coincides: every point is its own root

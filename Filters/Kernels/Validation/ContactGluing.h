@@ -31,8 +31,9 @@ constexpr double RelativeContactTolerance = 1e-10;
 // Rewrites `mesh.tets` so that glued copies refer to the lowest id among them; coordinates and
 // point ids are untouched (the dropped copies become unused). The result does not depend on the
 // order in which faces or points are visited, nor on `parallelFor`, which runs the search for
-// coincident points.
-Status glueMatchingFaces(TetMesh& mesh, const ParallelFor& parallelFor, ContactGluing& outcome);
+// coincident points. `used` lists the points the tets use, ascending (listUsedPoints()).
+Status glueMatchingFaces(TetMesh& mesh, const std::vector<PointId>& used,
+  const ParallelFor& parallelFor, ContactGluing& outcome);
 
 } // namespace cgmesh
 

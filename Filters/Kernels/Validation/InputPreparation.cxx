@@ -12,35 +12,30 @@ namespace cgmesh
 namespace
 {
 
-// Refuses used points with NaN or infinite coordinates. Ranges of points are checked
+// Refuses used points with NaN or infinite coordinates. Ranges of the used points are checked
 // concurrently and their counts added in range order.
-Status checkCoordinates(const TetMesh& mesh, const ParallelFor& parallelFor)
+Status checkCoordinates(
+  const TetMesh& mesh, const std::vector<PointId>& used, const ParallelFor& parallelFor)
 {
-  PointMarks used;
-  Status status = markUsedPoints(mesh, parallelFor, used);
   struct Counts
   {
     PointId nonFinite = 0, first = -1;
   };
-  std::vector<Counts> countsOfRange(
-    (mesh.numberOfPoints() + IndicesPerCopyRange - 1) / IndicesPerCopyRange);
-  if (status.ok())
-  {
-    status = forEachRange(parallelFor, mesh.numberOfPoints(), IndicesPerCopyRange,
-      [&](std::int64_t begin, std::int64_t end)
+  const std::int64_t count = static_cast<std::int64_t>(used.size());
+  std::vector<Counts> countsOfRange((count + IndicesPerCopyRange - 1) / IndicesPerCopyRange);
+  const Status status = forEachRange(parallelFor, count, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      Counts& counts = countsOfRange[begin / IndicesPerCopyRange];
+      for (std::int64_t i = begin; i < end; ++i)
       {
-        Counts& counts = countsOfRange[begin / IndicesPerCopyRange];
-        for (PointId p = begin; p < end; ++p)
+        const double* x = mesh.point(used[i]);
+        if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
         {
-          const double* x = mesh.point(p);
-          if (used[p].load(std::memory_order_relaxed) &&
-            !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
-          {
-            counts.first = counts.nonFinite++ == 0 ? p : counts.first;
-          }
+          counts.first = counts.nonFinite++ == 0 ? used[i] : counts.first;
         }
-      });
-  }
+      }
+    });
   if (!status.ok())
   {
     return status;
@@ -136,17 +131,23 @@ Status prepareInput(
   const TetMesh& input, TetMesh& prepared, InputRepairs& repairs, const ParallelFor& parallelFor)
 {
   repairs = InputRepairs();
+  // The used points, listed once for the coordinate check and the contact search.
+  std::vector<PointId> used;
   Status status = copyMesh(input, prepared, parallelFor);
   if (status.ok())
   {
-    status = checkCoordinates(prepared, parallelFor);
+    status = listUsedPoints(prepared, parallelFor, used);
+  }
+  if (status.ok())
+  {
+    status = checkCoordinates(prepared, used, parallelFor);
   }
   if (!status.ok())
   {
     return status;
   }
   ContactGluing gluing;
-  status = glueMatchingFaces(prepared, parallelFor, gluing);
+  status = glueMatchingFaces(prepared, used, parallelFor, gluing);
   if (!status.ok())
   {
     return status;
