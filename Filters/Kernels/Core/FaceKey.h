@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace cgmesh
@@ -21,17 +22,22 @@ using Face = std::array<PointId, 3>; // corners in ascending order
 template <typename Index>
 std::array<Index, 3> sortedFace(const Index* corners, int skip)
 {
-  std::array<Index, 3> face;
-  int n = 0;
-  for (int i = 0; i < 4; ++i)
+  // The three corners after `skip`, cyclically, then a three-element sorting network: this runs
+  // four times per tet in every face search, where a general sort's call was 3% of a run.
+  Index a = corners[(skip + 1) & 3], b = corners[(skip + 2) & 3], c = corners[(skip + 3) & 3];
+  if (b < a)
   {
-    if (i != skip)
+    std::swap(a, b);
+  }
+  if (c < b)
+  {
+    std::swap(b, c);
+    if (b < a)
     {
-      face[n++] = corners[i];
+      std::swap(a, b);
     }
   }
-  std::sort(face.begin(), face.end());
-  return face;
+  return { a, b, c };
 }
 
 // Calls visit(face, first, second, count) once per distinct face of the tets: `face` its sorted
