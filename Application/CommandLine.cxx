@@ -552,6 +552,13 @@ Status parseTetGenOption(const std::string& name, const std::string& value, TetG
     return parseDouble(value, name, 1.0, parsed.radiusEdgeRatio);
   if (name == "--compression")
     return parseCompression(value, parsed.outputFile, parsed.compression);
+  if (name == "--tet-order")
+  {
+    if (value != "hilbert" && value != "input")
+      return Status::failure("--tet-order must be 'hilbert' or 'input', not '" + value + "'");
+    parsed.tetsAlongHilbertCurve = value == "hilbert";
+    return Status::success();
+  }
   (name == "--region-array" ? parsed.regionArrayName : parsed.statsFile) = value;
   return Status::success();
 }
@@ -594,9 +601,9 @@ Status parseTetGenArguments(const std::vector<std::string>& arguments, TetGenArg
 {
   std::vector<std::string> positionals;
   std::map<std::string, std::string> options;
-  const OptionNames known{
-    { "--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "--compression" }, {}
-  };
+  const OptionNames known{ { "--max-volume", "--radius-edge-ratio", "--region-array", "--stats",
+                             "--compression", "--tet-order" },
+    {} };
   Status status = splitArguments(arguments, known, positionals, options);
   if (!status.ok())
     return status;

@@ -43,6 +43,7 @@ struct TetGenArguments
   std::string regionArrayName;
   std::string statsFile; // JSON statistics, written when not empty
   Compression compression = DefaultCompression;
+  bool tetsAlongHilbertCurve = true; // --tet-order hilbert (default) or input
 };
 
 struct CheckArguments

@@ -1,6 +1,7 @@
 // cgmesh tetgen IN OUT --max-volume V [...]: serial TetGen refining the whole mesh in one call, the
 // baseline the Delaunay method is measured against.
 #include "Commands.h"
+#include "Core/HilbertCurve.h"
 #include "Core/Stopwatch.h"
 
 #include "CommandLine.h"
@@ -22,6 +23,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <numeric>
 
 namespace cgmesh
 {
@@ -49,6 +51,11 @@ void printTetGenUsage()
        "  --region-array NAME     cell array with material/region ids\n"
        "  --stats FILE.json       write counts and seconds (tetgen, quality, read, write,\n"
        "                          total) as JSON\n"
+       "  --tet-order ORDER       the order TetGen receives the tets in: 'hilbert' (default),\n"
+       "                          along a Hilbert curve through their centroids, or 'input',\n"
+       "                          as in IN (what 'tetgen -r' on IN's files does). TetGen builds\n"
+       "                          its face links faster when neighbours come close together:\n"
+       "                          twice as fast in all on the FinFET of 'cgmesh generate'\n"
     << compressionHelp();
 }
 
@@ -61,9 +68,16 @@ std::string tetgenSwitches(const TetGenArguments& arguments)
   return switches;
 }
 
-// TetGen input of the whole mesh; regions, when present, become the one tet attribute.
-void fillTetGenInput(const TetMesh& mesh, tetgenio& in)
+// TetGen input of the whole mesh; regions, when present, become the one tet attribute. The tets
+// go in the input's order or along a Hilbert curve.
+void fillTetGenInput(const TetMesh& mesh, bool alongHilbertCurve, tetgenio& in)
 {
+  std::vector<std::size_t> order(mesh.tets.size());
+  std::iota(order.begin(), order.end(), std::size_t{ 0 });
+  if (alongHilbertCurve)
+  {
+    order = tetsAlongHilbertCurve(mesh.tets, [&mesh](PointId p) { return mesh.point(p); });
+  }
   in.firstnumber = 0;
   in.numberofpoints = static_cast<int>(mesh.numberOfPoints());
   in.pointlist = new REAL[mesh.coordinates.size()];
@@ -73,13 +87,16 @@ void fillTetGenInput(const TetMesh& mesh, tetgenio& in)
   in.tetrahedronlist = new int[4 * mesh.tets.size()];
   for (std::size_t t = 0; t < mesh.tets.size(); ++t)
   {
-    std::copy(mesh.tets[t].begin(), mesh.tets[t].end(), in.tetrahedronlist + 4 * t);
+    std::copy(mesh.tets[order[t]].begin(), mesh.tets[order[t]].end(), in.tetrahedronlist + 4 * t);
   }
   if (mesh.hasRegions())
   {
     in.numberoftetrahedronattributes = 1;
     in.tetrahedronattributelist = new REAL[mesh.regions.size()];
-    std::copy(mesh.regions.begin(), mesh.regions.end(), in.tetrahedronattributelist);
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    {
+      in.tetrahedronattributelist[t] = mesh.regions[order[t]];
+    }
   }
 }
 
@@ -131,7 +148,7 @@ Status runTetGen(const TetGenArguments& arguments, vtkUnstructuredGrid* input,
   if (!status.ok())
     return status;
   tetgenio in, out;
-  fillTetGenInput(mesh, in);
+  fillTetGenInput(mesh, arguments.tetsAlongHilbertCurve, in);
   const bool withRegions = mesh.hasRegions();
   mesh = TetMesh();
   TetGenWorkerPool worker(1);
@@ -158,6 +175,7 @@ Status writeTetGenStatistics(
        << ", \"cells\": " << output->GetNumberOfCells() << "},\n"
        << "  \"method\": \"tetgen\",\n"
        << "  \"switches\": " << jsonString(run.switches) << ",\n"
+       << "  \"tetOrder\": \"" << (arguments.tetsAlongHilbertCurve ? "hilbert" : "input") << "\",\n"
        << "  \"volumeBound\": " << arguments.maximumVolume << ",\n"
        << "  \"radiusEdgeRatio\": " << arguments.radiusEdgeRatio << ",\n"
        << "  \"tetgenPoints\": " << output->GetNumberOfPoints() - run.inputPoints << ",\n"

@@ -69,7 +69,7 @@ def test_help(cgmesh):
         check(text in refine_help, "refine --help does not mention " + text)
     tetgen_help = run(cgmesh, "tetgen", "--help").stdout
     for text in ("--max-volume", "--radius-edge-ratio", "--region-array", "--stats", "rQq",
-                 "--compression"):
+                 "--compression", "--tet-order"):
         check(text in tetgen_help, "tetgen --help does not mention " + text)
     check("--compression" in run(cgmesh, "generate", "--help").stdout,
           "generate --help does not mention --compression")
@@ -345,38 +345,45 @@ def test_improvement_options(cgmesh, scratch):
 
 
 def test_tetgen(cgmesh, scratch):
-    """The serial baseline on the FinFET: valid, every region's volume kept, quality arrays and
-    stats written."""
+    """The serial baseline on the FinFET, with the tets along a Hilbert curve (the default) and in
+    the input's order: valid, every region's volume kept, quality arrays and stats written."""
     finfet = os.path.join(scratch, "finfet.vtu")
-    refined = os.path.join(scratch, "finfet-tetgen.vtu")
-    stats = os.path.join(scratch, "finfet-tetgen.json")
     before, _ = region_volumes(cgmesh, finfet)
     volume = sum(before.values())
-    result = run(cgmesh, "tetgen", finfet, refined, "--max-volume", str(0.3 * volume / 3000),
-                 "--radius-edge-ratio", "2", "--region-array", "Material", "--stats", stats)
-    check(result.returncode == 0, "tetgen: " + result.stderr)
-    if result.returncode != 0:
-        return
-    check("tetgen" in result.stdout and "rQq2a" in result.stdout, "tetgen table: " + result.stdout)
-    with open(stats) as handle:
-        statistics = json.load(handle)
-    for phase in ("tetgen", "quality", "read", "write", "total"):
-        check(phase in statistics["seconds"], "tetgen stats lack seconds of " + phase)
-    check(statistics["output"]["cells"] > 2 * statistics["input"]["cells"], "tetgen: no refinement")
-    check(statistics["tetgenPoints"] > 0 and statistics["switches"].startswith("rQq2a"),
-          "tetgen stats: points/switches")
-    after, status = region_volumes(cgmesh, refined)
-    check(status == 0, "check the TetGen-refined FinFET")
-    check(before.keys() == after.keys() and all(
-        abs(after[region] - volume) <= 1e-9 * volume for region, volume in before.items()),
-        "TetGen region volumes %s != input %s" % (after, before))
-    reader_check = subprocess.run(
-        [sys.executable, "-c", "import sys\nfrom vtkmodules.vtkIOXML import "
-         "vtkXMLUnstructuredGridReader\nr = vtkXMLUnstructuredGridReader()\n"
-         "r.SetFileName(sys.argv[1])\nr.Update()\ncd = r.GetOutput().GetCellData()\n"
-         "sys.exit(0 if cd.GetArray('EdgeRatio') and cd.GetArray('MinDihedralAngle') "
-         "and cd.GetArray('Material') else 1)", refined], capture_output=True, text=True)
-    check(reader_check.returncode == 0, "tetgen output lacks EdgeRatio/MinDihedralAngle/Material")
+    for order in ("hilbert", "input"):
+        refined = os.path.join(scratch, "finfet-tetgen-%s.vtu" % order)
+        stats = os.path.join(scratch, "finfet-tetgen-%s.json" % order)
+        options = [] if order == "hilbert" else ["--tet-order", order]
+        result = run(cgmesh, "tetgen", finfet, refined, "--max-volume", str(0.3 * volume / 3000),
+                     "--radius-edge-ratio", "2", "--region-array", "Material", "--stats", stats,
+                     *options)
+        check(result.returncode == 0, "tetgen %s: %s" % (order, result.stderr))
+        if result.returncode != 0:
+            continue
+        check("tetgen" in result.stdout and "rQq2a" in result.stdout,
+              "tetgen table: " + result.stdout)
+        with open(stats) as handle:
+            statistics = json.load(handle)
+        for phase in ("tetgen", "quality", "read", "write", "total"):
+            check(phase in statistics["seconds"], "tetgen stats lack seconds of " + phase)
+        check(statistics["output"]["cells"] > 2 * statistics["input"]["cells"],
+              "tetgen: no refinement")
+        check(statistics["tetgenPoints"] > 0 and statistics["switches"].startswith("rQq2a"),
+              "tetgen stats: points/switches")
+        check(statistics.get("tetOrder") == order, "tetgen stats: tetOrder %s" % order)
+        after, status = region_volumes(cgmesh, refined)
+        check(status == 0, "check the TetGen-refined FinFET (%s order)" % order)
+        check(before.keys() == after.keys() and all(
+            abs(after[region] - volume) <= 1e-9 * volume for region, volume in before.items()),
+            "TetGen region volumes %s != input %s" % (after, before))
+        reader_check = subprocess.run(
+            [sys.executable, "-c", "import sys\nfrom vtkmodules.vtkIOXML import "
+             "vtkXMLUnstructuredGridReader\nr = vtkXMLUnstructuredGridReader()\n"
+             "r.SetFileName(sys.argv[1])\nr.Update()\ncd = r.GetOutput().GetCellData()\n"
+             "sys.exit(0 if cd.GetArray('EdgeRatio') and cd.GetArray('MinDihedralAngle') "
+             "and cd.GetArray('Material') else 1)", refined], capture_output=True, text=True)
+        check(reader_check.returncode == 0,
+              "tetgen output lacks EdgeRatio/MinDihedralAngle/Material")
 
 
 def expect_error(cgmesh, scratch, description, arguments, output, exit_status=None):
@@ -449,6 +456,8 @@ def test_errors(cgmesh, scratch):
         ("tetgen without --max-volume", ["tetgen", cube, out]),
         ("tetgen with a zero bound", ["tetgen", cube, out, "--max-volume", "0"]),
         ("tetgen unknown option", ["tetgen", cube, out, "--max-volume", "0.01", "--threads", "2"]),
+        ("tetgen unknown order", ["tetgen", cube, out, "--max-volume", "0.01", "--tet-order",
+                                  "random"]),
         ("tetgen without OUT", ["tetgen", cube, "--max-volume", "0.01"]),
     ]
     for description, arguments in usage_cases:

@@ -2,6 +2,7 @@
 
 #include "Partitioning/MeshPartitioner.h"
 
+#include "Core/HilbertCurve.h"
 #include "Core/ParallelSort.h"
 
 #include <algorithm>
@@ -11,50 +12,6 @@
 
 namespace cgmesh
 {
-
-std::uint64_t hilbertIndex(std::array<std::uint32_t, 3> cell, int bits)
-{
-  // Walk the levels from the coarsest: at each level the lower bits are reflected or swapped so
-  // that the sub-cube reached is entered the way the curve enters it (Skilling's "transpose"
-  // form of the Hilbert index), then the three coordinates are Gray-decoded into one index.
-  const std::uint32_t top = 1u << (bits - 1);
-  for (std::uint32_t level = top; level > 1; level >>= 1)
-  {
-    const std::uint32_t lower = level - 1;
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      if (cell[axis] & level)
-      {
-        cell[0] ^= lower;
-      }
-      else
-      {
-        const std::uint32_t swapped = (cell[0] ^ cell[axis]) & lower;
-        cell[0] ^= swapped;
-        cell[axis] ^= swapped;
-      }
-    }
-  }
-  cell[1] ^= cell[0];
-  cell[2] ^= cell[1];
-  std::uint32_t flip = 0;
-  for (std::uint32_t level = top; level > 1; level >>= 1)
-  {
-    if (cell[2] & level)
-    {
-      flip ^= level - 1;
-    }
-  }
-  std::uint64_t index = 0;
-  for (int bit = bits - 1; bit >= 0; --bit)
-  {
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      index = (index << 1) | (((cell[axis] ^ flip) >> bit) & 1u);
-    }
-  }
-  return index;
-}
 
 Status partitionAlongHilbertCurve(const TetMesh& mesh, int numberOfPartitions,
   std::vector<int>& partitionOfCell, const ParallelFor& parallelFor)

@@ -16,10 +16,6 @@
 namespace cgmesh
 {
 
-// Position along the 3D Hilbert curve of order `bits` (at most 21) of a point on the integer grid
-// [0, 2^bits)^3.
-std::uint64_t hilbertIndex(std::array<std::uint32_t, 3> cell, int bits);
-
 // Assigns every tet a partition in [0, numberOfPartitions): the tets ordered by the Hilbert index
 // of their centroid (ties by tet id) are cut into runs of equal size. Deterministic: `parallelFor`
 // runs the keys and the sort in ranges, and the result does not depend on it.

@@ -3,6 +3,7 @@
 #include "Refinement/EnclosedPieces.h"
 
 #include "Core/Geometry.h"
+#include "Core/HilbertCurve.h"
 #include "Core/TetLocator.h"
 
 #define TETLIBRARY
@@ -105,8 +106,11 @@ bool sameArea(const tetgenio& io, const std::vector<std::array<int, 3>>& faces,
 void TetGenSession::prepareInput(tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order,
   TetGenInput input, PointId firstDroppablePoint)
 {
-  this->numberPoints();
   this->Remesh = input != TetGenInput::Tets;
+  this->TetsInSpace = this->Remesh ? std::vector<std::size_t>()
+                                   : tetsAlongHilbertCurve(this->Partition.tets,
+                                       [this](PointId id) { return this->coordinatesOf(id); });
+  this->numberPoints();
   this->DropsPoints = input == TetGenInput::KeptFacesAndOwnPoints;
   if (input == TetGenInput::KeptFacesAndOwnPoints)
   {
@@ -154,16 +158,17 @@ void TetGenSession::prepareInput(tetgenio& in, const std::vector<Face>& keptFace
 
 void TetGenSession::numberPoints()
 {
-  for (const Tet& tet : this->Partition.tets)
+  const std::size_t count = this->Partition.tets.size();
+  for (std::size_t i = 0; i < count; ++i)
   {
-    for (PointId p : tet)
+    const std::size_t t = this->TetsInSpace.empty() ? i : this->TetsInSpace[i];
+    for (PointId p : this->Partition.tets[t])
     {
       if (this->Numbering.localOfId.emplace(p, static_cast<int>(this->Numbering.idOfLocal.size()))
             .second)
       {
         this->Numbering.idOfLocal.push_back(p);
-        this->Numbering.tetOfLocal.push_back(
-          static_cast<std::size_t>(&tet - this->Partition.tets.data()));
+        this->Numbering.tetOfLocal.push_back(t);
       }
     }
   }
@@ -227,7 +232,7 @@ void TetGenSession::fillTetsAndFaces(
   in.tetrahedronattributelist = new REAL[in.numberoftetrahedra];
   for (int t = 0; t < in.numberoftetrahedra; ++t)
   {
-    const std::size_t source = order.sourceOf(static_cast<std::size_t>(t));
+    const std::size_t source = this->TetsInSpace[order.sourceOf(static_cast<std::size_t>(t))];
     std::copy_n(corners.data() + 4 * source, 4, in.tetrahedronlist + 4 * t);
     in.tetrahedronattributelist[t] = this->regionOfTet(source);
   }

@@ -146,6 +146,9 @@ private:
   const RefinementContext& Context;
   const PartitionRefinement& Refinement;
   LocalNumbering Numbering;
+  // Switch r: the partition's tets along a Hilbert curve, the order TetGen receives them in (the
+  // attempt's order applies to this sequence).
+  std::vector<std::size_t> TetsInSpace;
   std::vector<std::array<int, 3>> KeptFaces; // in local numbers, sorted
   bool Remesh = false;
   bool DropsPoints = false;           // KeptFacesAndOwnPoints: the sweep across former interfaces
