@@ -55,7 +55,7 @@ void printTetGenUsage()
        "                          along a Hilbert curve through their centroids, or 'input',\n"
        "                          as in IN (what 'tetgen -r' on IN's files does). TetGen builds\n"
        "                          its face links faster when neighbours come close together:\n"
-       "                          twice as fast in all on the FinFET of 'cgmesh generate'\n"
+       "                          3.9 s instead of 6.9 s on the FinFET of 'generate finfet'\n"
     << compressionHelp();
 }
 

@@ -114,7 +114,8 @@ public:
     DelaunayOutcome& outcome) const;
 
 private:
-  // Local numbers in the order the partition's tets first reach the points.
+  // Local numbers in the order the tets TetGen receives (TetsInSpace for switch r, else the
+  // partition's own order) first reach the points.
   void numberPoints();
 
   // Renumbers the points so that those TetGen receives come first, in their order, and the
