@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace cgmesh
 {
@@ -39,6 +40,26 @@ inline Status forEachRange(const ParallelFor& parallelFor, std::int64_t count,
   const std::int64_t ranges = (count + rangeSize - 1) / rangeSize;
   return parallelFor(ranges,
     [&](std::int64_t range) { body(range * rangeSize, std::min(count, (range + 1) * rangeSize)); });
+}
+
+// Where consecutive ranges of `rangeSize` indices over [0, count) place their items, when
+// countIn(begin, end) tells how many [begin, end) has: the ranges are counted through
+// `parallelFor` and summed in range order, so the offsets do not depend on the schedule. One
+// entry per range, then the total.
+inline Status offsetsOfRanges(const ParallelFor& parallelFor, std::int64_t count,
+  std::int64_t rangeSize, const std::function<std::int64_t(std::int64_t, std::int64_t)>& countIn,
+  std::vector<std::int64_t>& offsets)
+{
+  const std::int64_t ranges = (count + rangeSize - 1) / rangeSize;
+  offsets.assign(static_cast<std::size_t>(ranges) + 1, 0);
+  const Status status = forEachRange(parallelFor, count, rangeSize,
+    [&](std::int64_t begin, std::int64_t end)
+    { offsets[static_cast<std::size_t>(begin / rangeSize) + 1] = countIn(begin, end); });
+  for (std::size_t r = 1; r < offsets.size(); ++r)
+  {
+    offsets[r] += offsets[r - 1];
+  }
+  return status;
 }
 
 } // namespace cgmesh

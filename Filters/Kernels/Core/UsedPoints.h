@@ -13,6 +13,25 @@
 namespace cgmesh
 {
 
+// Where each range of IndicesPerCopyRange points puts its marked points, marks counted by ranges
+// (see offsetsOfRanges): one entry per range, then the number of marked points.
+inline Status offsetsOfMarkedPoints(const std::vector<std::atomic<unsigned char>>& marks,
+  const ParallelFor& parallelFor, std::vector<std::int64_t>& offsets)
+{
+  return offsetsOfRanges(
+    parallelFor, static_cast<std::int64_t>(marks.size()), IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      std::int64_t count = 0;
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        count += marks[p].load(std::memory_order_relaxed);
+      }
+      return count;
+    },
+    offsets);
+}
+
 // The ids of the used points in ascending order. Ranges of tets mark the points concurrently
 // (every order of the stores gives the same marks); the marks are counted by ranges of points,
 // then the ids written at their range's offset.
@@ -32,28 +51,14 @@ inline Status listUsedPoints(
       }
     });
   const std::int64_t points = mesh.numberOfPoints();
-  std::vector<std::int64_t> firstOfRange(
-    static_cast<std::size_t>((points + IndicesPerCopyRange - 1) / IndicesPerCopyRange) + 1, 0);
+  std::vector<std::int64_t> firstOfRange;
   if (status.ok())
   {
-    status = forEachRange(parallelFor, points, IndicesPerCopyRange,
-      [&](std::int64_t begin, std::int64_t end)
-      {
-        std::int64_t count = 0;
-        for (std::int64_t p = begin; p < end; ++p)
-        {
-          count += used[p].load(std::memory_order_relaxed);
-        }
-        firstOfRange[begin / IndicesPerCopyRange + 1] = count;
-      });
+    status = offsetsOfMarkedPoints(used, parallelFor, firstOfRange);
   }
   if (!status.ok())
   {
     return status;
-  }
-  for (std::size_t r = 1; r < firstOfRange.size(); ++r)
-  {
-    firstOfRange[r] += firstOfRange[r - 1];
   }
   ids.resize(static_cast<std::size_t>(firstOfRange.back()));
   return forEachRange(parallelFor, points, IndicesPerCopyRange,

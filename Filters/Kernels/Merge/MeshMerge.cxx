@@ -1,6 +1,7 @@
 #include "Merge/MeshMerge.h"
 
 #include "Core/TetLocator.h"
+#include "Core/UsedPoints.h"
 
 #include <algorithm>
 #include <atomic>
@@ -169,28 +170,14 @@ Status numberUsedPoints(const std::vector<PartitionMesh>& partitions, PointId gl
         }
       }
     });
-  const std::int64_t ranges = (globalCount + IndicesPerCopyRange - 1) / IndicesPerCopyRange;
-  std::vector<PointId> firstOfRange(ranges + 1, 0);
+  std::vector<PointId> firstOfRange;
   if (status.ok())
   {
-    status = forEachRange(parallelFor, globalCount, IndicesPerCopyRange,
-      [&](std::int64_t begin, std::int64_t end)
-      {
-        PointId count = 0;
-        for (std::int64_t p = begin; p < end; ++p)
-        {
-          count += used[p].load(std::memory_order_relaxed);
-        }
-        firstOfRange[begin / IndicesPerCopyRange + 1] = count;
-      });
+    status = offsetsOfMarkedPoints(used, parallelFor, firstOfRange);
   }
   if (!status.ok())
   {
     return status;
-  }
-  for (std::int64_t range = 0; range < ranges; ++range)
-  {
-    firstOfRange[range + 1] += firstOfRange[range];
   }
   outputCount = firstOfRange.back();
   outputIdOf.resize(globalCount);

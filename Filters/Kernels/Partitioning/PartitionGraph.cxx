@@ -113,27 +113,25 @@ Status collectInterfaceGroups(const std::vector<TetRun>& runs, PointId numberOfP
         cursor[pair.first].fetch_add(1, std::memory_order_relaxed);
       }
     });
-  const std::int64_t pointRanges =
-    std::max<std::int64_t>(1, (numberOfPoints + IndicesPerCopyRange - 1) / IndicesPerCopyRange);
-  std::vector<std::int64_t> rangeStart(static_cast<std::size_t>(pointRanges) + 1, 0);
-  std::vector<std::int64_t> start(points + 1, 0);
-  if (status.ok())
+  if (!status.ok())
   {
-    status = forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
-      [&](std::int64_t begin, std::int64_t end)
+    return status;
+  }
+  std::vector<std::int64_t> rangeStart; // never empty: one entry per range, then the total
+  status = offsetsOfRanges(
+    parallelFor, numberOfPoints, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      std::int64_t sum = 0;
+      for (std::int64_t p = begin; p < end; ++p)
       {
-        std::int64_t sum = 0;
-        for (std::int64_t p = begin; p < end; ++p)
-        {
-          sum += cursor[p].load(std::memory_order_relaxed);
-        }
-        rangeStart[begin / IndicesPerCopyRange + 1] = sum;
-      });
-  }
-  for (std::int64_t r = 0; r < pointRanges; ++r)
-  {
-    rangeStart[r + 1] += rangeStart[r];
-  }
+        sum += cursor[p].load(std::memory_order_relaxed);
+      }
+      return sum;
+    },
+    rangeStart);
+  const std::int64_t pointRanges = static_cast<std::int64_t>(rangeStart.size()) - 1;
+  std::vector<std::int64_t> start(points + 1, 0);
   if (status.ok())
   {
     status = forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
