@@ -8,27 +8,40 @@
 namespace cgmesh
 {
 
+namespace
+{
+
+// The low 21 bits of `value` moved to every third bit (bit i to bit 3 i).
+std::uint64_t spreadToEveryThirdBit(std::uint32_t value)
+{
+  std::uint64_t x = value & 0x1fffffu;
+  x = (x | (x << 32)) & 0x1f00000000ffffull;
+  x = (x | (x << 16)) & 0x1f0000ff0000ffull;
+  x = (x | (x << 8)) & 0x100f00f00f00f00full;
+  x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
+  x = (x | (x << 2)) & 0x1249249249249249ull;
+  return x;
+}
+
+} // namespace
+
 std::uint64_t hilbertIndex(std::array<std::uint32_t, 3> cell, int bits)
 {
   // Walk the levels from the coarsest: at each level the lower bits are reflected or swapped so
   // that the sub-cube reached is entered the way the curve enters it (Skilling's "transpose"
   // form of the Hilbert index), then the three coordinates are Gray-decoded into one index.
+  // Masks instead of branches: the bits tested are the data's, and mispredicted branches made
+  // this the partitioner's largest cost.
   const std::uint32_t top = 1u << (bits - 1);
   for (std::uint32_t level = top; level > 1; level >>= 1)
   {
     const std::uint32_t lower = level - 1;
     for (int axis = 0; axis < 3; ++axis)
     {
-      if (cell[axis] & level)
-      {
-        cell[0] ^= lower;
-      }
-      else
-      {
-        const std::uint32_t swapped = (cell[0] ^ cell[axis]) & lower;
-        cell[0] ^= swapped;
-        cell[axis] ^= swapped;
-      }
+      const std::uint32_t set = 0u - ((cell[axis] & level) != 0 ? 1u : 0u);
+      const std::uint32_t swapped = (cell[0] ^ cell[axis]) & lower & ~set;
+      cell[0] ^= (lower & set) | swapped;
+      cell[axis] ^= swapped;
     }
   }
   cell[1] ^= cell[0];
@@ -36,20 +49,12 @@ std::uint64_t hilbertIndex(std::array<std::uint32_t, 3> cell, int bits)
   std::uint32_t flip = 0;
   for (std::uint32_t level = top; level > 1; level >>= 1)
   {
-    if (cell[2] & level)
-    {
-      flip ^= level - 1;
-    }
+    flip ^= (level - 1) & (0u - ((cell[2] & level) != 0 ? 1u : 0u));
   }
-  std::uint64_t index = 0;
-  for (int bit = bits - 1; bit >= 0; --bit)
-  {
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      index = (index << 1) | (((cell[axis] ^ flip) >> bit) & 1u);
-    }
-  }
-  return index;
+  const std::uint32_t used = bits >= 32 ? ~0u : (1u << bits) - 1;
+  return (spreadToEveryThirdBit((cell[0] ^ flip) & used) << 2) |
+    (spreadToEveryThirdBit((cell[1] ^ flip) & used) << 1) |
+    spreadToEveryThirdBit((cell[2] ^ flip) & used);
 }
 
 std::vector<std::size_t> tetsAlongHilbertCurve(
