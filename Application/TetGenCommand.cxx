@@ -7,7 +7,7 @@
 #include "CommandLine.h"
 #include "MeshFiles.h"
 #include "RefineReport.h"
-#include "TetGenWorkers.h"
+#include "WorkerPool.h"
 #include "cgmeshTetQuality.h"
 #include "cgmeshVTKConversion.h"
 
@@ -151,8 +151,8 @@ Status runTetGen(const TetGenArguments& arguments, vtkUnstructuredGrid* input,
   fillTetGenInput(mesh, arguments.tetsAlongHilbertCurve, in);
   const bool withRegions = mesh.hasRegions();
   mesh = TetMesh();
-  TetGenWorkerPool worker(1);
-  const std::string failure = worker.run(0, in, run.switches, out);
+  WorkerPool worker(1);
+  const std::string failure = worker.runTetGen(0, in, run.switches, out);
   if (!failure.empty())
     return Status::failure("TetGen failed: " + failure);
   status = readTetGenOutput(out, withRegions, mesh);

@@ -6,12 +6,13 @@
 #include "ImprovementSweep.h"
 #include "InputImprovement.h"
 #include "ParallelFor.h"
+#include "Partitioning/CurveChunkPartitioner.h"
 #include "Partitioning/HilbertPartitioner.h"
 #include "Partitioning/MeshPartitioner.h"
 #include "Refinement/SizeField.h"
 #include "RemeshSweep.h"
-#include "TetGenWorkers.h"
 #include "Validation/InputPreparation.h"
+#include "WorkerPool.h"
 
 #include <algorithm>
 #include <memory>
@@ -92,9 +93,27 @@ Status distributeTets(const TetMesh& input, const std::vector<int>& partitionOfC
     });
 }
 
+// METIS for the chunks of the curve-chunk partitioner: in worker processes when there are any
+// (METIS' random draws are process-wide), else here, one call at a time. A chunk whose worker
+// failed is cut here: the same result.
+GraphPartitioner metisForChunks(WorkerPool* workers)
+{
+  return [workers](const DualGraph& graph, int parts, std::vector<int>& partOfVertex)
+  {
+    if (workers &&
+      workers->partitionGraph(currentThreadIndex(), graph, parts, false, partOfVertex).empty())
+    {
+      return Status::success();
+    }
+    static std::mutex oneCallAtATime;
+    std::lock_guard<std::mutex> lock(oneCallAtATime);
+    return partitionGraphWithMetis(graph, parts, partOfVertex, false);
+  };
+}
+
 Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
-  std::vector<int>& partitionOfCell, PartitionGraph& graph, AdaptationSummary& summary,
-  PhaseReporter& reporter)
+  WorkerPool* workers, std::vector<int>& partitionOfCell, PartitionGraph& graph,
+  AdaptationSummary& summary, PhaseReporter& reporter)
 {
   const AdaptationPlan& plan = summary.plan;
   reporter.enter(Phase::Partition);
@@ -106,16 +125,25 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   Status status = Status::success();
   if (options.partitionByRegion)
   {
-    status = partitionByRegion(input, options.partitionsPerRegion, partitionOfCell, partitions);
+    status = partitionByRegion(
+      input, options.partitionsPerRegion, partitionOfCell, partitions, parallelForOn(plan.threads));
   }
   else if (plan.partitioner == PartitionerKind::Hilbert)
   {
     status = partitionAlongHilbertCurve(
       input, plan.partitions, partitionOfCell, parallelForOn(plan.threads));
   }
+  else if (plan.partitioner == PartitionerKind::CurveChunks &&
+    curveChunkCount(input.numberOfTets(), plan.partitions) > 1)
+  {
+    const int chunks = curveChunkCount(input.numberOfTets(), plan.partitions);
+    status = partitionInCurveChunks(input, plan.partitions, chunks, metisForChunks(workers),
+      partitionOfCell, parallelForOn(plan.threads));
+  }
   else
   {
-    status = partitionMesh(input, plan.partitions, partitionOfCell, partitioning);
+    status = partitionMesh(
+      input, plan.partitions, partitionOfCell, partitioning, parallelForOn(plan.threads));
   }
   if (!status.ok())
   {
@@ -196,24 +224,39 @@ ColorLoopSetup refinementSetup(const AdaptationOptions& options, const Adaptatio
   return setup;
 }
 
-// TetGen calls go to one worker process per thread (or one, serialised, on request).
+// Worker processes, forked before any parallel loop of the run: one per thread for the Delaunay
+// method's TetGen calls (or one, serialised, on request), and for the curve-chunk partitioner's
+// METIS calls when there are chunks and threads to run them at once. None otherwise.
+std::unique_ptr<WorkerPool> startWorkers(
+  const TetMesh& input, const AdaptationOptions& options, const AdaptationPlan& plan)
+{
+  if (options.method == RefinementMethod::Delaunay)
+  {
+    return std::make_unique<WorkerPool>(options.serializeTetGen ? 1 : plan.threads);
+  }
+  if (plan.partitioner == PartitionerKind::CurveChunks && !options.partitionByRegion &&
+    plan.threads > 1 && curveChunkCount(input.numberOfTets(), plan.partitions) > 1)
+  {
+    return std::make_unique<WorkerPool>(plan.threads);
+  }
+  return nullptr;
+}
+
+// TetGen calls go to the worker of the calling thread (or to the first, serialised, on request).
 void attachTetGen(const AdaptationOptions& options, ColorLoopSetup& setup,
-  AdaptationSummary& summary, std::unique_ptr<TetGenWorkerPool>& workers, std::mutex& serialTetGen)
+  AdaptationSummary& summary, WorkerPool* pool, std::mutex& serialTetGen)
 {
   const bool serialize = options.serializeTetGen;
-  const int threads = summary.plan.threads;
-  workers = std::make_unique<TetGenWorkerPool>(serialize ? 1 : threads);
-  summary.concurrentTetGen = !serialize && threads > 1;
-  TetGenWorkerPool* pool = workers.get();
+  summary.concurrentTetGen = !serialize && summary.plan.threads > 1;
   setup.runTetGen = [pool, serialize, &serialTetGen](
                       int partition, const tetgenio& in, const std::string& switches, tetgenio& out)
   {
     if (serialize)
     {
       std::lock_guard<std::mutex> lock(serialTetGen);
-      return pool->run(0, in, switches, out, partition);
+      return pool->runTetGen(0, in, switches, out, partition);
     }
-    return pool->run(currentThreadIndex(), in, switches, out, partition);
+    return pool->runTetGen(currentThreadIndex(), in, switches, out, partition);
   };
 }
 
@@ -317,7 +360,9 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   AdaptationSummary& summary = result.summary;
   std::vector<int> partitionOfCell;
   PartitionGraph graph;
-  Status status = partitionAndColor(input, options, partitionOfCell, graph, summary, reporter);
+  std::unique_ptr<WorkerPool> workers = startWorkers(input, options, summary.plan);
+  Status status =
+    partitionAndColor(input, options, workers.get(), partitionOfCell, graph, summary, reporter);
   if (!status.ok())
   {
     return status;
@@ -336,11 +381,10 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
     return status;
   }
   ColorLoopSetup setup = refinementSetup(options, summary);
-  std::unique_ptr<TetGenWorkerPool> tetgenWorkers;
   std::mutex serialTetGen;
   if (options.method == RefinementMethod::Delaunay)
   {
-    attachTetGen(options, setup, summary, tetgenWorkers, serialTetGen);
+    attachTetGen(options, setup, summary, workers.get(), serialTetGen);
   }
   if (improvesInputFirst(options, summary.plan))
   {
@@ -360,7 +404,7 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   }
   std::vector<char> formerInterface;
   status = refineAndImprove(options, setup, state, summary, reporter, formerInterface);
-  tetgenWorkers.reset();
+  workers.reset();
   if (!status.ok() || summary.aborted)
   {
     return status;

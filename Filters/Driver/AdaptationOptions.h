@@ -26,9 +26,10 @@ enum class RefinementMethod
 
 enum class PartitionerKind
 {
-  Automatic, // Hilbert for templates, METIS for Delaunay (resolved in the plan)
-  Metis,     // METIS k-way on the dual graph
-  Hilbert    // equal runs along a Hilbert curve through the tet centroids
+  Automatic,  // Hilbert for templates, curve chunks for Delaunay (resolved in the plan)
+  Metis,      // METIS k-way on the dual graph
+  Hilbert,    // equal runs along a Hilbert curve through the tet centroids
+  CurveChunks // Hilbert chunks, each cut by METIS, concurrently
 };
 
 struct AdaptationOptions
@@ -106,19 +107,25 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "forecast output tets (64 to 1024); reduced to the number of tets of a smaller mesh (with "
       "a warning when requested); not used with PartitionByRegion",
       &O::numberOfPartitions },
-    { "Partitioner", "--partitioner", "NAME", K::Choice, 0, 2, 0, "", S::Any,
+    { "Partitioner", "--partitioner", "NAME", K::Choice, 0, 3, 0, "", S::Any,
       "how the mesh is cut into NumberOfPartitions parts; not used with PartitionByRegion, "
       "which runs METIS inside each region",
       &O::partitioner,
       { { "auto", "Automatic",
-          "Hilbert for Template (no serial graph partitioning; templates do not mind the longer "
-          "interfaces), METIS for Delaunay (short interfaces: fewer pre-split interface edges)" },
+          "Hilbert for Template (no graph partitioning; templates do not mind the longer "
+          "interfaces), curve chunks for Delaunay (short interfaces: fewer pre-split interface "
+          "edges)" },
         { "metis", "METIS",
-          "k-way on the dual graph: compact parts, short interfaces; its cost "
-          "grows with the partition count" },
+          "k-way on the whole dual graph: compact parts, the shortest interfaces; one serial "
+          "METIS call whose cost grows with the partition count" },
         { "hilbert", "Hilbert",
           "equal runs along a Hilbert curve through the tet centroids: one sort, the same cost "
-          "for any count, longer interfaces" } } },
+          "for any count, longer interfaces" },
+        { "curve-chunks", "CurveChunks",
+          "from 400,000 tets: the Hilbert curve cuts the mesh into one chunk per 200,000 tets "
+          "(at most one per 16 partitions), METIS cuts every chunk's dual graph, the chunks at "
+          "once in worker processes: a few percent more interface points than METIS; a smaller "
+          "mesh goes to METIS whole" } } },
     { "RegionArrayName", "--region-array", "NAME", K::Text, 0, 0, 0, "", S::Any,
       "numeric cell array of material/region ids; empty or None: the input's integer cell "
       "arrays (ids, ghost flags and cgmesh's own arrays excepted) are kept as material labels "

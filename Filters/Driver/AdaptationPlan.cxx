@@ -230,11 +230,11 @@ int resolvePartitions(const TetMesh& input, const AdaptationOptions& options, do
   return options.numberOfPartitions;
 }
 
-// Automatic: Hilbert runs for templates, METIS for Delaunay. Measured at 2 threads (FinFET of
-// 843,973 tets): templates (factor 0.5) 13.7 s with METIS, 3.5 s of it partitioning, against
-// 10.7 s with Hilbert at the same quality; Delaunay (V = mean volume) on the Kuhn cube N=25
-// makes 10% more tets with Hilbert's longer interfaces (each is pre-split to the V-tet's edge)
-// and improves them 2 s longer, which outweighs the 0.3 s of METIS.
+// Automatic: Hilbert runs for templates, METIS in curve chunks for Delaunay. Measured at 2
+// threads (FinFET of 843,973 tets): templates (factor 0.5) 13.7 s with METIS, 3.5 s of it
+// partitioning, against 10.7 s with Hilbert at the same quality; Delaunay (V = mean volume) on
+// the Kuhn cube N=25 makes 10% more tets with Hilbert's longer interfaces (each is pre-split to
+// the V-tet's edge) and improves them 2 s longer, which outweighs the 0.3 s of METIS.
 PartitionerKind resolvePartitioner(const AdaptationOptions& options)
 {
   if (options.partitionByRegion)
@@ -246,7 +246,7 @@ PartitionerKind resolvePartitioner(const AdaptationOptions& options)
     return options.partitioner;
   }
   return options.method == RefinementMethod::Template ? PartitionerKind::Hilbert
-                                                      : PartitionerKind::Metis;
+                                                      : PartitionerKind::CurveChunks;
 }
 
 } // namespace

@@ -4,7 +4,7 @@
 // boundary area, region volumes and material-interface area, and leave its input untouched.
 #include "AdaptationDriver.h"
 #include "CubeGenerator.h"
-#include "TetGenWorkers.h"
+#include "WorkerPool.h"
 #include "Validation/MeshValidation.h"
 
 #define TETLIBRARY
@@ -76,8 +76,8 @@ TetMesh randomDelaunay(ByteReader& bytes)
     in.pointlist[i] = bytes.unit() * (1 + (i % 3));
   }
   TetMesh mesh;
-  TetGenWorkerPool pool(1);
-  if (!pool.run(0, in, "Q", out).empty())
+  WorkerPool pool(1);
+  if (!pool.runTetGen(0, in, "Q", out).empty())
   {
     return mesh;
   }

@@ -107,7 +107,8 @@ void test_every_coloring_gives_identical_output_across_threads()
 void test_each_partitioner_conforms_for_any_thread_count()
 {
   const TetMesh input = cubeWithRegions(6);
-  for (PartitionerKind partitioner : { PartitionerKind::Metis, PartitionerKind::Hilbert })
+  for (PartitionerKind partitioner :
+    { PartitionerKind::Metis, PartitionerKind::Hilbert, PartitionerKind::CurveChunks })
   {
     for (int partitions : { 64, 1296 })
     {

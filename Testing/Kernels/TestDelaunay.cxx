@@ -10,7 +10,7 @@
 #include "Refinement/TetGenRefiner.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
-#include "TetGenWorkers.h"
+#include "WorkerPool.h"
 
 #define TETLIBRARY
 #include <tetgen.h>
@@ -244,7 +244,7 @@ void test_worker_deaths_fall_back_like_failures()
   AdaptationOptions simulated = delaunayOptions(2, 1);
   simulated.simulateTetGenFailureIn = { 3, 17, 40 };
   const AdaptationResult reference = run(input, simulated);
-  CHECK(setenv(TetGenWorkerPool::KillPartitionsVariable, "3,17,40", 1) == 0);
+  CHECK(setenv(WorkerPool::KillPartitionsVariable, "3,17,40", 1) == 0);
   for (int threads : { 2, 4 })
   {
     const AdaptationResult result = run(input, delaunayOptions(threads, 1));
@@ -261,7 +261,7 @@ void test_worker_deaths_fall_back_like_failures()
                               "partition, SIGABRT)") != std::string::npos);
     }
   }
-  CHECK(unsetenv(TetGenWorkerPool::KillPartitionsVariable) == 0);
+  CHECK(unsetenv(WorkerPool::KillPartitionsVariable) == 0);
 }
 
 void test_bad_delaunay_options_are_refused()
@@ -285,7 +285,7 @@ void test_tampered_tetgen_output_is_refused()
   const DelaunayParameters parameters{ 0.05 * (1.0 / mesh.numberOfTets()), 2.0, false };
   const PartitionSetting setting(mesh, parameters);
   const RefinementContext& context = setting.context;
-  TetGenWorkerPool pool(1);
+  WorkerPool pool(1);
 
   // `tamper` sees each TetGen call's switches and successful output; a reason it returns stands
   // for a failed call.
@@ -304,7 +304,7 @@ void test_tampered_tetgen_output_is_refused()
     const TetGenRunner runner = [&](const tetgenio& in, const std::string& switches, tetgenio& out)
     {
       calls.push_back(switches);
-      const std::string failure = pool.run(0, in, switches, out);
+      const std::string failure = pool.runTetGen(0, in, switches, out);
       return failure.empty() && out.neighborlist ? tamper(switches, out) : failure;
     };
     CHECK(refinePartitionDelaunay(

@@ -11,7 +11,7 @@
 #include "Refinement/TetGenRefiner.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
-#include "TetGenWorkers.h"
+#include "WorkerPool.h"
 
 #define TETLIBRARY
 #include <tetgen.h>
@@ -184,12 +184,12 @@ GlobalPartition inGlobalIds(
 }
 
 // A TetGen runner in one worker that checks each call meshes anew (switches starting pA).
-TetGenRunner remeshingRunner(TetGenWorkerPool& pool)
+TetGenRunner remeshingRunner(WorkerPool& pool)
 {
   return [&pool](const tetgenio& in, const std::string& switches, tetgenio& out)
   {
     CHECK(switches.rfind("pA", 0) == 0);
-    return pool.run(0, in, switches, out);
+    return pool.runTetGen(0, in, switches, out);
   };
 }
 
@@ -213,7 +213,7 @@ void test_sliver_laden_partition_is_meshed_anew_around_a_cavity()
   const DelaunayParameters parameters{ 0.5 / mesh.numberOfTets(), 2.0, false };
   const PartitionSetting setting(mesh, parameters);
   const RefinementContext& context = setting.context;
-  TetGenWorkerPool pool(1);
+  WorkerPool pool(1);
   const TetGenRunner runner = remeshingRunner(pool);
   PartitionRefinement refinement;
   DelaunayOutcome outcome;
@@ -362,12 +362,12 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
   parameters.shapesOnly = true;
   parameters.keptFacesMaySplit = true;
   const PartitionSetting setting(mesh, parameters);
-  TetGenWorkerPool pool(1);
+  WorkerPool pool(1);
   const TetGenRunner runner = [&pool](
                                 const tetgenio& in, const std::string& switches, tetgenio& out)
   {
     CHECK(switches.rfind("pA", 0) == 0 && switches.find('Y') == std::string::npos);
-    return pool.run(0, in, switches, out);
+    return pool.runTetGen(0, in, switches, out);
   };
   // The area of the kept faces, and how many of them have a corner TetGen added.
   auto keptArea = [&mesh](const TetList& tets, const std::vector<int>& regions,
@@ -417,7 +417,7 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
   const TetGenRunner pushing = [&pool](
                                  const tetgenio& in, const std::string& switches, tetgenio& out)
   {
-    const std::string failure = pool.run(0, in, switches, out);
+    const std::string failure = pool.runTetGen(0, in, switches, out);
     for (int t = 0; failure.empty() && t < out.numberoftetrahedra; ++t)
     {
       for (int k = 0; k < 4; ++k)
@@ -480,7 +480,7 @@ void test_sweep_box_drops_only_interior_points_refinement_made()
 
   const DelaunayParameters parameters{ 0.5 / mesh.numberOfTets(), 2.0, false };
   const PartitionSetting setting(mesh, parameters);
-  TetGenWorkerPool pool(1);
+  WorkerPool pool(1);
   const TetGenRunner runner = remeshingRunner(pool);
   PartitionRefinement refinement;
   DelaunayOutcome outcome;

@@ -5,15 +5,23 @@
 // whatever the schedule, the others left in place, the way back to the cells' partitions in that
 // order too, and a box graph holding every pair of boxes that
 // share a point. The face table every face search uses: each face once, with the first two tets
-// that hold it and their count.
+// that hold it and their count. The dual graph against a map of faces, the same from serial and
+// concurrent ranges; the curve-chunk partitioner: every partition inside one chunk, the same
+// partitions through worker processes and threads as serially in this process; the METIS worker
+// gives the in-process result.
 #include "Core/FaceKey.h"
 #include "Core/HilbertCurve.h"
 #include "Core/ParallelSort.h"
 #include "CubeGenerator.h"
+#include "FinFetGenerator.h"
+#include "ParallelFor.h"
 #include "Partitioning/BoxPartitions.h"
+#include "Partitioning/CurveChunkPartitioner.h"
+#include "Partitioning/DualGraph.h"
 #include "Partitioning/HilbertPartitioner.h"
 #include "Partitioning/MeshPartitioner.h"
 #include "TestHarness.h"
+#include "WorkerPool.h"
 
 #include <algorithm>
 #include <array>
@@ -397,6 +405,184 @@ void test_box_graph_holds_every_shared_point()
   checkHoldsExactGraph(coarseBoxes, coarse, coarseGraph);
 }
 
+// The tets of `mesh` in a scrambled order, so that neither tets nor faces come sorted.
+TetMesh scrambledTets(const TetMesh& mesh)
+{
+  TetMesh scrambled = mesh;
+  const std::size_t count = mesh.tets.size();
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    scrambled.tets[t] = mesh.tets[(t * 7919) % count];
+    if (mesh.hasRegions())
+    {
+      scrambled.regions[t] = mesh.regions[(t * 7919) % count];
+    }
+  }
+  return scrambled;
+}
+
+// Every pair of tets that share a face, by a map of all faces; a face in three tets links none.
+std::vector<std::vector<CellId>> neighboursByFaceMap(const TetList& tets)
+{
+  std::map<Face, std::vector<CellId>> tetsOfFace;
+  for (std::size_t t = 0; t < tets.size(); ++t)
+  {
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      tetsOfFace[sortedFace(tets[t].data(), skip)].push_back(static_cast<CellId>(t));
+    }
+  }
+  std::vector<std::vector<CellId>> neighbours(tets.size());
+  for (const auto& [face, holders] : tetsOfFace)
+  {
+    if (holders.size() == 2 && holders[0] != holders[1])
+    {
+      neighbours[holders[0]].push_back(holders[1]);
+      neighbours[holders[1]].push_back(holders[0]);
+    }
+  }
+  for (std::vector<CellId>& row : neighbours)
+  {
+    std::sort(row.begin(), row.end());
+  }
+  return neighbours;
+}
+
+void checkDualGraph(const TetList& tets)
+{
+  const std::vector<std::vector<CellId>> expected = neighboursByFaceMap(tets);
+  DualGraph serial, concurrent;
+  CHECK(buildDualGraph(tets, serial).ok());
+  CHECK(buildDualGraph(tets, concurrent, parallelForOn(2)).ok());
+  CHECK(serial.offsets == concurrent.offsets);
+  CHECK(serial.neighbours == concurrent.neighbours);
+  CHECK_EQUAL(serial.offsets.size(), tets.size() + 1);
+  for (std::size_t t = 0; t < tets.size() && serial.offsets.size() == tets.size() + 1; ++t)
+  {
+    const std::vector<CellId> row(serial.neighbours.begin() + serial.offsets[t],
+      serial.neighbours.begin() + serial.offsets[t + 1]);
+    CHECK(row == expected[t]);
+  }
+}
+
+// Meshes of two ranges of tets and many buckets: the N=25 Kuhn cube (93,750 tets) scrambled, an
+// unstructured multi-material TetGen mesh, and a small mesh whose first face is held by a third,
+// overlapping tet (invalid input: that face links nobody, the others stay).
+void test_dual_graph_matches_a_face_map()
+{
+  TetMesh cube;
+  CHECK(generateKuhnCube(25, cube).ok());
+  checkDualGraph(scrambledTets(cube).tets);
+  TetMesh finFet;
+  CHECK(generateFinFetWithTetGen(20000, finFet).ok());
+  checkDualGraph(scrambledTets(finFet).tets);
+  TetMesh small;
+  CHECK(generateKuhnCube(2, small).ok());
+  const Face shared = sortedFace(small.tets[0].data(), 0);
+  small.tets.push_back({ shared[0], shared[1], shared[2], small.numberOfPoints() - 1 });
+  checkDualGraph(small.tets);
+  DualGraph graph;
+  CHECK(buildDualGraph(small.tets, graph).ok());
+  CHECK(graph.offsets.back() > 0);
+}
+
+// The chunk count: one chunk (plain METIS) below 400,000 tets or 32 partitions, one per 200,000
+// tets or 16 partitions above, at most 64.
+void test_curve_chunk_count()
+{
+  CHECK_EQUAL(curveChunkCount(93750, 94), 1);
+  CHECK_EQUAL(curveChunkCount(837584, 16), 1);
+  CHECK_EQUAL(curveChunkCount(837584, 84), 4);
+  CHECK_EQUAL(curveChunkCount(837584, 64), 4);
+  CHECK_EQUAL(curveChunkCount(2000000, 84), 5);
+  CHECK_EQUAL(curveChunkCount(100000000, 65536), 64);
+}
+
+// An unstructured FinFET in 4 chunks of 6 partitions: every partition in one chunk (the chunk's
+// run along the curve), all used, and the same partitions with METIS in worker processes on two
+// threads as serially in this process. The chunk borders add interface, but not much.
+void test_curve_chunks_partition_inside_chunks()
+{
+  TetMesh mesh;
+  CHECK(generateFinFetWithTetGen(40000, mesh).ok());
+  mesh = scrambledTets(mesh);
+  const int chunks = 4, partitions = 24;
+  const GraphPartitioner inProcess = [](const DualGraph& graph, int parts, std::vector<int>& part)
+  {
+    return partitionGraphWithMetis(graph, parts, part, false);
+  };
+  std::vector<int> serial;
+  CHECK(partitionInCurveChunks(mesh, partitions, chunks, inProcess, serial).ok());
+  checkCovers(serial, partitions);
+
+  std::vector<CellId> order;
+  CHECK(orderTetsAlongHilbertCurve(mesh, order, ParallelFor(runSerially), 10).ok());
+  const CellId tetCount = mesh.numberOfTets();
+  for (CellId position = 0; position < tetCount; ++position)
+  {
+    int chunk = 0;
+    while (chunk + 1 < chunks && (chunk + 1) * tetCount / chunks <= position)
+    {
+      ++chunk;
+    }
+    const int partition = serial[order[position]];
+    CHECK(
+      partition >= chunk * partitions / chunks && partition < (chunk + 1) * partitions / chunks);
+  }
+
+  WorkerPool workers(2);
+  const GraphPartitioner inWorkers = [&](const DualGraph& graph, int parts, std::vector<int>& part)
+  {
+    const std::string failure =
+      workers.partitionGraph(currentThreadIndex(), graph, parts, false, part);
+    CHECK(failure.empty());
+    return failure.empty() ? Status::success() : Status::failure(failure);
+  };
+  std::vector<int> concurrent;
+  CHECK(
+    partitionInCurveChunks(mesh, partitions, chunks, inWorkers, concurrent, parallelForOn(2)).ok());
+  CHECK(concurrent == serial);
+
+  // Interface points against one METIS call on the whole mesh.
+  auto interfacePoints = [&](const std::vector<int>& partitionOf)
+  {
+    std::vector<int> first(mesh.numberOfPoints(), -1);
+    std::vector<char> shared(mesh.numberOfPoints(), 0);
+    for (CellId t = 0; t < tetCount; ++t)
+    {
+      for (PointId p : mesh.tets[t])
+      {
+        shared[p] |= first[p] >= 0 && first[p] != partitionOf[t];
+        first[p] = first[p] < 0 ? partitionOf[t] : first[p];
+      }
+    }
+    return std::count(shared.begin(), shared.end(), 1);
+  };
+  PartitioningOptions flat;
+  flat.contiguous = false;
+  std::vector<int> whole;
+  CHECK(partitionMesh(mesh, partitions, whole, flat).ok());
+  CHECK(interfacePoints(serial) < interfacePoints(whole) * 13 / 10);
+}
+
+// METIS in a worker process cuts a graph as the call in this process does, one request after
+// another on the same worker.
+void test_metis_worker_matches_in_process()
+{
+  TetMesh mesh;
+  CHECK(generateKuhnCube(10, mesh).ok());
+  DualGraph graph;
+  CHECK(buildDualGraph(mesh.tets, graph).ok());
+  WorkerPool workers(1);
+  for (int parts : { 2, 7, 64 })
+  {
+    std::vector<int> here, there;
+    CHECK(partitionGraphWithMetis(graph, parts, here, false).ok());
+    CHECK(workers.partitionGraph(0, graph, parts, false, there).empty());
+    CHECK(here == there);
+  }
+}
+
 } // namespace
 
 // The face table against a map of every face: the Kuhn cube with its corners taken in a
@@ -468,5 +654,9 @@ int main()
   test_regrouping_by_cell_partition_keeps_serial_order();
   test_box_graph_holds_every_shared_point();
   test_distinct_faces_match_a_map();
+  test_dual_graph_matches_a_face_map();
+  test_curve_chunk_count();
+  test_curve_chunks_partition_inside_chunks();
+  test_metis_worker_matches_in_process();
   return cgmesh_test::finish("TestPartitioning");
 }

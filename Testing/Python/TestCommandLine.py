@@ -232,6 +232,18 @@ def test_delaunay(cgmesh, scratch):
         with open(refined, "rb") as handle:
             outputs.append(handle.read())
     check(outputs[0] == outputs[1], "Delaunay output files of 1 and 2 threads differ")
+    check(statistics["partitioner"] == "curve-chunks", "Delaunay's automatic partitioner")
+    # Below 400,000 tets the curve chunks are one: METIS on the whole mesh, the same file.
+    refined = os.path.join(scratch, "finfet-delaunay-metis.vtu")
+    result = run(cgmesh, "refine", finfet, refined, "--region-array", "Material",
+                 "--partitions", "8", "--method", "delaunay", "--volume-factor", "0.3",
+                 "--radius-edge-ratio", "1.8", "--threads", "2", "--partitioner", "metis")
+    check(result.returncode == 0, "refine --partitioner metis: " + result.stderr)
+    same = subprocess.run([sys.executable, "-c", SAME_MESH_AND_CELL_ARRAYS, refined,
+                           os.path.join(scratch, "finfet-delaunay-2.vtu")],
+                          capture_output=True, text=True)
+    check(same.returncode == 0 and same.stdout.strip() == "same",
+          "a small mesh in curve chunks is not METIS' partition: " + same.stdout + same.stderr)
     before, _ = region_volumes(cgmesh, finfet)
     after, status = region_volumes(cgmesh, refined)
     check(status == 0, "check the Delaunay-refined FinFET")
@@ -247,6 +259,30 @@ def test_delaunay(cgmesh, scratch):
     check(result.returncode == 0, "refine --max-volume: " + result.stderr)
     with open(stats) as handle:
         check(json.load(handle)["volumeBound"] == 0.0005, "--max-volume is not the bound")
+
+
+# Prints "same" when two files hold the same points, cells and cell arrays (their field data, such
+# as the partitioner's index, may differ).
+SAME_MESH_AND_CELL_ARRAYS = """import sys
+import numpy
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+def read(path):
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    cells = grid.GetCellData()
+    arrays = {cells.GetArrayName(i): vtk_to_numpy(cells.GetArray(i))
+              for i in range(cells.GetNumberOfArrays())}
+    return (vtk_to_numpy(grid.GetPoints().GetData()),
+            vtk_to_numpy(grid.GetCells().GetConnectivityArray()), arrays)
+first, second = read(sys.argv[1]), read(sys.argv[2])
+same = (numpy.array_equal(first[0], second[0]) and numpy.array_equal(first[1], second[1]) and
+        first[2].keys() == second[2].keys() and len(first[2]) > 2 and
+        all(numpy.array_equal(first[2][name], second[2][name]) for name in first[2]))
+print("same" if same else "different")
+"""
 
 
 # Computes the quality summary of a refined file from its cell arrays, as numpy does, to check the

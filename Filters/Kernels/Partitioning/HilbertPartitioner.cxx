@@ -13,15 +13,14 @@
 namespace cgmesh
 {
 
-Status partitionAlongHilbertCurve(const TetMesh& mesh, int numberOfPartitions,
-  std::vector<int>& partitionOfCell, const ParallelFor& parallelFor)
+Status orderTetsAlongHilbertCurve(
+  const TetMesh& mesh, std::vector<CellId>& order, const ParallelFor& parallelFor, int bits)
 {
   const CellId tetCount = mesh.numberOfTets();
-  partitionOfCell.assign(tetCount, 0);
-  const Status count = checkPartitionCount(tetCount, numberOfPartitions);
-  if (!count.ok() || numberOfPartitions == 1)
+  order.clear();
+  if (tetCount == 0)
   {
-    return count;
+    return Status::success();
   }
 
   // Centroids (times 4) on one cubic grid over the tets' bounding box, so that the curve keeps
@@ -61,10 +60,9 @@ Status partitionAlongHilbertCurve(const TetMesh& mesh, int numberOfPartitions,
       high[axis] = std::max(high[axis], box[1][axis]);
     }
   }
-  constexpr int Bits = 21;
-  constexpr double LastCell = (1u << Bits) - 1;
+  const double lastCell = (1u << bits) - 1;
   const double extent = std::max({ high[0] - low[0], high[1] - low[1], high[2] - low[2], 1e-300 });
-  std::vector<std::pair<std::uint64_t, CellId>> order(tetCount);
+  std::vector<std::pair<std::uint64_t, CellId>> keyed(tetCount);
   if (status.ok())
   {
     status = forEachRange(parallelFor, tetCount, rangeSize,
@@ -75,29 +73,55 @@ Status partitionAlongHilbertCurve(const TetMesh& mesh, int numberOfPartitions,
           std::array<std::uint32_t, 3> cell;
           for (int axis = 0; axis < 3; ++axis)
           {
-            const double scaled = (centroids[t][axis] - low[axis]) / extent * LastCell;
-            cell[axis] = static_cast<std::uint32_t>(std::clamp(scaled, 0.0, LastCell));
+            const double scaled = (centroids[t][axis] - low[axis]) / extent * lastCell;
+            cell[axis] = static_cast<std::uint32_t>(std::clamp(scaled, 0.0, lastCell));
           }
-          order[t] = { hilbertIndex(cell, Bits), t };
+          keyed[t] = { hilbertIndex(cell, bits), t };
         }
       });
   }
   if (status.ok())
   {
-    status = sortInParallel(order, parallelFor);
+    status = sortInParallel(keyed, parallelFor);
   }
   if (!status.ok())
   {
     return status;
   }
-
-  // Run r holds the tets at positions [r n / k, (r + 1) n / k).
+  order.resize(tetCount);
   return forEachRange(parallelFor, tetCount, rangeSize,
     [&](std::int64_t begin, std::int64_t end)
     {
       for (CellId position = begin; position < end; ++position)
       {
-        partitionOfCell[order[position].second] =
+        order[position] = keyed[position].second;
+      }
+    });
+}
+
+Status partitionAlongHilbertCurve(const TetMesh& mesh, int numberOfPartitions,
+  std::vector<int>& partitionOfCell, const ParallelFor& parallelFor)
+{
+  const CellId tetCount = mesh.numberOfTets();
+  partitionOfCell.assign(tetCount, 0);
+  const Status count = checkPartitionCount(tetCount, numberOfPartitions);
+  if (!count.ok() || numberOfPartitions == 1)
+  {
+    return count;
+  }
+  std::vector<CellId> order;
+  const Status status = orderTetsAlongHilbertCurve(mesh, order, parallelFor);
+  if (!status.ok())
+  {
+    return status;
+  }
+  // Run r holds the tets at positions [r n / k, (r + 1) n / k).
+  return forEachRange(parallelFor, tetCount, IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (CellId position = begin; position < end; ++position)
+      {
+        partitionOfCell[order[position]] =
           static_cast<int>(position * numberOfPartitions / tetCount);
       }
     });

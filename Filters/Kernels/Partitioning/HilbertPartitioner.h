@@ -16,6 +16,12 @@
 namespace cgmesh
 {
 
+// The tets' ids ordered by the Hilbert index of their centroid on a grid of 2^bits cells a side
+// (bits in [1, 21]) over the mesh's bounding cube, ties by tet id. The index costs a step per
+// bit. The same for any `parallelFor`.
+Status orderTetsAlongHilbertCurve(const TetMesh& mesh, std::vector<CellId>& order,
+  const ParallelFor& parallelFor = ParallelFor(runSerially), int bits = 21);
+
 // Assigns every tet a partition in [0, numberOfPartitions): the tets ordered by the Hilbert index
 // of their centroid (ties by tet id) are cut into runs of equal size. Deterministic: `parallelFor`
 // runs the keys and the sort in ranges, and the result does not depend on it.

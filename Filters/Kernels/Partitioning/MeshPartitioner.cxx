@@ -1,7 +1,5 @@
 #include "Partitioning/MeshPartitioner.h"
 
-#include "Core/FaceKey.h"
-
 #include <metis.h>
 
 #include <algorithm>
@@ -9,108 +7,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <tuple>
 #include <utility>
 
 namespace cgmesh
 {
-
-DualGraph buildDualGraph(const TetMesh& mesh)
-{
-  // Faces grouped by their smallest corner (a counting sort, linear in the mesh), then matched
-  // inside each small group: no global sort of 4n faces.
-  struct FaceOfTet
-  {
-    PointId second, third; // the other two corners, ascending
-    CellId tet;
-    bool operator<(const FaceOfTet& other) const
-    {
-      return std::tie(second, third, tet) < std::tie(other.second, other.third, other.tet);
-    }
-  };
-  PointId pointCount = 0;
-  for (const Tet& tet : mesh.tets)
-  {
-    pointCount = std::max(pointCount, *std::max_element(tet.begin(), tet.end()) + 1);
-  }
-  std::vector<std::int64_t> groupStart(static_cast<std::size_t>(pointCount) + 1, 0);
-  for (const Tet& tet : mesh.tets)
-  {
-    for (int skip = 0; skip < 4; ++skip)
-    {
-      ++groupStart[sortedFace(tet.data(), skip)[0] + 1];
-    }
-  }
-  for (PointId p = 0; p < pointCount; ++p)
-  {
-    groupStart[p + 1] += groupStart[p];
-  }
-  std::vector<FaceOfTet> faces(4 * mesh.tets.size());
-  {
-    std::vector<std::int64_t> next(groupStart.begin(), groupStart.end() - 1);
-    for (CellId t = 0; t < mesh.numberOfTets(); ++t)
-    {
-      for (int skip = 0; skip < 4; ++skip)
-      {
-        const auto face = sortedFace(mesh.tets[t].data(), skip);
-        faces[next[face[0]]++] = { face[1], face[2], t };
-      }
-    }
-  }
-
-  // Each tet has at most four face neighbours: fixed slots, -1 when empty. Only a face shared by
-  // three tets (invalid input) could ask for a fifth; such a pair is left out on both sides, so
-  // the graph stays symmetric as METIS requires.
-  std::vector<std::array<CellId, 4>> neighbours(mesh.tets.size(), { -1, -1, -1, -1 });
-  auto freeSlot = [&](CellId tet, CellId other) -> CellId*
-  {
-    for (CellId& slot : neighbours[tet])
-    {
-      if (slot < 0 || slot == other)
-      {
-        return &slot;
-      }
-    }
-    return nullptr;
-  };
-  auto addPair = [&](CellId a, CellId b)
-  {
-    CellId* slotOfA = freeSlot(a, b);
-    CellId* slotOfB = freeSlot(b, a);
-    if (slotOfA && slotOfB)
-    {
-      *slotOfA = b;
-      *slotOfB = a;
-    }
-  };
-  for (PointId p = 0; p < pointCount; ++p)
-  {
-    const auto first = faces.begin() + groupStart[p];
-    const auto last = faces.begin() + groupStart[p + 1];
-    std::sort(first, last);
-    for (auto face = first; face != last && face + 1 != last; ++face)
-    {
-      const auto next = face + 1;
-      if (face->second == next->second && face->third == next->third && face->tet != next->tet)
-      {
-        addPair(face->tet, next->tet);
-      }
-    }
-  }
-
-  DualGraph graph;
-  graph.offsets.assign(mesh.tets.size() + 1, 0);
-  graph.neighbours.reserve(4 * mesh.tets.size());
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-  {
-    auto& slots = neighbours[t];
-    const auto end = std::find(slots.begin(), slots.end(), CellId(-1));
-    std::sort(slots.begin(), end); // ascending, as METIS' input must be reproducible
-    graph.neighbours.insert(graph.neighbours.end(), slots.begin(), end);
-    graph.offsets[t + 1] = static_cast<std::int64_t>(graph.neighbours.size());
-  }
-  return graph;
-}
 
 namespace
 {
@@ -140,9 +40,10 @@ bool isConnected(const DualGraph& graph)
   return visited == count;
 }
 
-// METIS k-way on a graph in compressed rows; with `contiguous`, connected parts when the graph is.
-Status partitionGraphKway(
-  const DualGraph& graph, int parts, std::vector<int>& partOfVertex, bool contiguous = true)
+} // namespace
+
+Status partitionGraphWithMetis(
+  const DualGraph& graph, int parts, std::vector<int>& partOfVertex, bool contiguous)
 {
   const std::int64_t vertexTotal = static_cast<std::int64_t>(graph.offsets.size()) - 1;
   partOfVertex.assign(vertexTotal, 0);
@@ -186,6 +87,9 @@ Status partitionGraphKway(
   std::copy(partition.begin(), partition.end(), partOfVertex.begin());
   return Status::success();
 }
+
+namespace
+{
 
 // The subgraph induced by `vertices` (ascending), renumbered 0..n-1 in that order.
 DualGraph inducedSubgraph(
@@ -263,7 +167,7 @@ Status partitionHierarchically(const DualGraph& graph, int parts,
   const std::size_t vertexCount = graph.offsets.size() - 1;
   const int coarseCount = std::max(2, static_cast<int>(std::lround(std::sqrt(parts))));
   std::vector<int> coarsePart;
-  Status status = partitionGraphKway(graph, coarseCount, coarsePart, options.contiguous);
+  Status status = partitionGraphWithMetis(graph, coarseCount, coarsePart, options.contiguous);
   if (!status.ok())
   {
     return status;
@@ -298,7 +202,7 @@ Status partitionHierarchically(const DualGraph& graph, int parts,
       }
       sub.offsets.push_back(static_cast<std::int64_t>(sub.neighbours.size()));
     }
-    status = partitionGraphKway(sub, shares[c], local[c], options.contiguous);
+    status = partitionGraphWithMetis(sub, shares[c], local[c], options.contiguous);
   }
   if (!status.ok())
   {
@@ -333,7 +237,7 @@ Status checkPartitionCount(CellId tetCount, int numberOfPartitions)
 }
 
 Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell,
-  const PartitioningOptions& options)
+  const PartitioningOptions& options, const ParallelFor& parallelFor)
 {
   const CellId tetCount = mesh.numberOfTets();
   partitionOfCell.assign(tetCount, 0);
@@ -342,16 +246,21 @@ Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<in
   {
     return count;
   }
-  const DualGraph graph = buildDualGraph(mesh);
+  DualGraph graph;
+  const Status built = buildDualGraph(mesh.tets, graph, parallelFor);
+  if (!built.ok())
+  {
+    return built;
+  }
   if (numberOfPartitions >= options.hierarchicalFrom)
   {
     return partitionHierarchically(graph, numberOfPartitions, options, partitionOfCell);
   }
-  return partitionGraphKway(graph, numberOfPartitions, partitionOfCell, options.contiguous);
+  return partitionGraphWithMetis(graph, numberOfPartitions, partitionOfCell, options.contiguous);
 }
 
 Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
-  std::vector<int>& partitionOfCell, int& numberOfPartitions)
+  std::vector<int>& partitionOfCell, int& numberOfPartitions, const ParallelFor& parallelFor)
 {
   if (!mesh.hasRegions())
   {
@@ -372,7 +281,15 @@ Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
     tetsOfRegion[position - regionIds.begin()].push_back(t);
   }
 
-  const DualGraph graph = partitionsPerRegion > 1 ? buildDualGraph(mesh) : DualGraph();
+  DualGraph graph;
+  if (partitionsPerRegion > 1)
+  {
+    const Status built = buildDualGraph(mesh.tets, graph, parallelFor);
+    if (!built.ok())
+    {
+      return built;
+    }
+  }
   std::vector<CellId> localIndexOf(mesh.tets.size(), -1);
   partitionOfCell.assign(mesh.tets.size(), 0);
   numberOfPartitions = 0;
@@ -383,7 +300,8 @@ Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
     std::vector<int> local(tets.size(), 0);
     if (parts > 1)
     {
-      Status status = partitionGraphKway(inducedSubgraph(graph, tets, localIndexOf), parts, local);
+      Status status =
+        partitionGraphWithMetis(inducedSubgraph(graph, tets, localIndexOf), parts, local);
       if (!status.ok())
       {
         return status;

@@ -4,21 +4,20 @@
 #define cgmesh_MeshPartitioner_h
 
 #include "Core/Status.h"
+#include "Core/Tasks.h"
 #include "Core/TetMesh.h"
+#include "Partitioning/DualGraph.h"
 
 #include <vector>
 
 namespace cgmesh
 {
 
-// Face-adjacency graph of the tets in compressed rows.
-struct DualGraph
-{
-  std::vector<std::int64_t> offsets; // size numberOfTets + 1
-  std::vector<CellId> neighbours;
-};
-
-DualGraph buildDualGraph(const TetMesh& mesh);
+// METIS k-way on `graph` into `parts` parts; with `contiguous`, connected parts when the graph is
+// connected. Deterministic for a given graph (fixed seed), but METIS draws from the C library's
+// process-wide random generator: two calls must never overlap in one process.
+Status partitionGraphWithMetis(
+  const DualGraph& graph, int parts, std::vector<int>& partOfVertex, bool contiguous = true);
 
 struct PartitioningOptions
 {
@@ -39,13 +38,15 @@ Status checkPartitionCount(CellId tetCount, int numberOfPartitions);
 // Assigns every tet a partition in [0, numberOfPartitions). Deterministic: METIS runs with a
 // fixed seed on graphs built in a fixed order.
 Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<int>& partitionOfCell,
-  const PartitioningOptions& options = PartitioningOptions());
+  const PartitioningOptions& options = PartitioningOptions(),
+  const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 // Cuts along material regions: each region (in increasing region id order) becomes
 // `partitionsPerRegion` partitions (fewer when it has fewer tets), split by METIS on the region's
 // own dual graph. Sets `numberOfPartitions` to the total. Requires mesh.regions.
 Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
-  std::vector<int>& partitionOfCell, int& numberOfPartitions);
+  std::vector<int>& partitionOfCell, int& numberOfPartitions,
+  const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 } // namespace cgmesh
 

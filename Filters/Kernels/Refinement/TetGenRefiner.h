@@ -68,7 +68,7 @@ double forecastDelaunayTetsForSizes(
 void setTriangleFacets(tetgenio& io, const int* corners, int count);
 
 // Runs TetGen with the given switches on `in`, filling `out`; returns an empty string on success,
-// else why it failed. The driver runs the calls in worker processes (see TetGenWorkers.h). A
+// else why it failed. The driver runs the calls in worker processes (see WorkerPool.h). A
 // call stopped for taking too long returns a reason that starts with TetGenTimeLimitReason: no
 // further attempt is made on that partition.
 constexpr const char* TetGenTimeLimitReason = "TetGen took longer than";

@@ -1,4 +1,4 @@
-// TetGen runs in worker processes, one per thread of the colour loop.
+// TetGen and METIS run in worker processes, one per thread.
 //
 // Two facts about TetGen 1.5 as packaged make in-process calls unsafe for a long-lived host such
 // as pvserver: every tetrahedralize() call rewrites process-wide state (the predicates' error
@@ -6,13 +6,18 @@
 // and the library is built with assertions, which abort the whole process on some degenerate
 // inputs (seen with -Y and a volume bound on valid partitions). A worker process has TetGen's
 // globals to itself, and when it dies the call simply fails: the partition falls back to
-// templates and the worker is replaced. Workers are forked by a WorkerSpawner, never by the
-// host's threads.
-#ifndef cgmesh_TetGenWorkers_h
-#define cgmesh_TetGenWorkers_h
+// templates and the worker is replaced. METIS draws from the C library's process-wide random
+// generator, so two calls in one process at once would make the partitions depend on timing; in
+// separate processes each call's draws are its own. Workers are forked by a WorkerSpawner, never
+// by the host's threads.
+#ifndef cgmesh_WorkerPool_h
+#define cgmesh_WorkerPool_h
 
+#include "Partitioning/DualGraph.h"
 #include "WorkerSpawner.h"
 
+#include <ctime>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <sys/types.h>
@@ -23,22 +28,28 @@ class tetgenio;
 namespace cgmesh
 {
 
-class TetGenWorkerPool
+class WorkerPool
 {
 public:
   // Starts `workers` worker processes, at most one per core, and the spawner that forks them and
   // their replacements (forked now, from the calling thread).
-  explicit TetGenWorkerPool(int workers);
-  ~TetGenWorkerPool();
-  TetGenWorkerPool(const TetGenWorkerPool&) = delete;
-  TetGenWorkerPool& operator=(const TetGenWorkerPool&) = delete;
+  explicit WorkerPool(int workers);
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
 
   // Runs TetGen with `switches` on `in` in worker `worker` modulo the number of workers (callers
   // that share a worker take turns) and fills `out`. Returns an empty string on success, else
   // why it failed. `partition` names the partition the call refines (-1: none), for the test
   // hook below.
-  std::string run(
+  std::string runTetGen(
     int worker, const tetgenio& in, const std::string& switches, tetgenio& out, int partition = -1);
+
+  // Cuts `graph` into `parts` parts with METIS (partitionGraphWithMetis) in worker `worker` modulo
+  // the number of workers. The same result as the call in this process. Returns an empty string
+  // on success, else why it failed.
+  std::string partitionGraph(
+    int worker, const DualGraph& graph, int parts, bool contiguous, std::vector<int>& partOfVertex);
 
   // Test hook: the environment variable CGMESH_TEST_KILL_TETGEN_PARTITIONS, a comma-separated
   // list of partition ids, read once when the pool starts. A worker that receives a call for one
@@ -54,6 +65,13 @@ private:
     std::mutex busy; // one request at a time; process and socket change only under it
   };
   bool start(Worker& worker);
+  // One request and its reply on worker `index`: `request` sends the request, `readResult` reads
+  // what follows a success flag; a failure flag is followed by a message, returned. A worker that
+  // breaks the exchange, dies, or sends nothing for `seconds` is replaced; the message names the
+  // `program` it ran and the `piece` of work it had.
+  std::string exchange(int index, time_t seconds, const std::string& program,
+    const std::string& piece, const std::function<bool(int)>& request,
+    const std::function<bool(int)>& readResult);
   int stop(Worker& worker, bool kill); // the wait status when it killed, else -1
 
   std::vector<Worker> Workers;

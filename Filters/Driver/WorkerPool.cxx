@@ -1,0 +1,309 @@
+#include "WorkerPool.h"
+
+#include "Partitioning/MeshPartitioner.h"
+#include "SocketTransfer.h"
+#include "WorkerMessages.h"
+
+#define TETLIBRARY
+#include <tetgen.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <csignal>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <new>
+#include <sys/socket.h>
+#include <sys/time.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace cgmesh
+{
+namespace
+{
+
+// A request starts with what the worker is to do with it.
+enum RequestKind : std::int32_t
+{
+  RunTetGen = 1,
+  DieAfterReading = 2, // the test hook: die as an abort inside TetGen would
+  PartitionGraph = 3
+};
+
+// Reads TetGen's switches and mesh, runs TetGen and answers. False when the exchange broke.
+bool serveTetGen(int socket, bool dieAfterReading)
+{
+  std::vector<char> switches;
+  tetgenio in, out;
+  if (!receiveArray(socket, switches) || switches.empty() || switches.back() != '\0' ||
+    !receiveMesh(socket, in))
+  {
+    return false;
+  }
+  if (dieAfterReading)
+  {
+    std::abort(); // what a failed assertion inside TetGen does
+  }
+  std::string failure;
+  try
+  {
+    tetgenbehavior behavior;
+    behavior.parse_commandline(switches.data());
+    tetrahedralize(&behavior, &in, &out);
+  }
+  catch (int code)
+  {
+    failure = "TetGen stopped with error code " + std::to_string(code);
+  }
+  catch (const std::bad_alloc&)
+  {
+    failure = "TetGen ran out of memory";
+  }
+  const std::int32_t ok = failure.empty() ? 1 : 0;
+  return sendAll(socket, &ok, sizeof(ok)) &&
+    (ok ? sendMesh(socket, out, WithNeighbours)
+        : sendArray(socket, failure.data(), static_cast<std::int64_t>(failure.size())));
+}
+
+// Reads a part count, the contiguity flag and a dual graph, runs METIS and answers with the part
+// of each vertex. False when the exchange broke.
+bool servePartitionGraph(int socket)
+{
+  std::int32_t settings[2] = { 0, 0 };
+  DualGraph graph;
+  if (!receiveAll(socket, settings, sizeof(settings)) || !receiveGraph(socket, graph))
+  {
+    return false;
+  }
+  std::vector<int> partOfVertex;
+  std::string failure;
+  try
+  {
+    const Status status = partitionGraphWithMetis(graph, settings[0], partOfVertex, settings[1]);
+    failure = status.ok() ? std::string() : status.message();
+  }
+  catch (const std::bad_alloc&)
+  {
+    failure = "METIS ran out of memory";
+  }
+  const std::int32_t ok = failure.empty() ? 1 : 0;
+  return sendAll(socket, &ok, sizeof(ok)) &&
+    (ok ? sendArray(socket, partOfVertex.data(), static_cast<std::int64_t>(partOfVertex.size()))
+        : sendArray(socket, failure.data(), static_cast<std::int64_t>(failure.size())));
+}
+
+// The worker's life: read a request, serve it; leave on end of input.
+[[noreturn]] void serveRequests(int socket)
+{
+  for (;;)
+  {
+    std::int32_t kind = 0;
+    if (!receiveAll(socket, &kind, sizeof(kind)))
+    {
+      _exit(0);
+    }
+    const bool served = kind == PartitionGraph ? servePartitionGraph(socket)
+                                               : serveTetGen(socket, kind == DieAfterReading);
+    if (!served)
+    {
+      _exit(1);
+    }
+  }
+}
+
+} // namespace
+
+namespace
+{
+
+// More workers than cores only add processes that wait for a core.
+std::size_t workerCount(int requested)
+{
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  return std::min(static_cast<std::size_t>(std::max(requested, 1)), cores);
+}
+
+// The partition ids listed in the test hook's variable ("3,17"), sorted; what is not a
+// non-negative number is ignored.
+std::vector<int> partitionsToKill()
+{
+  std::vector<int> partitions;
+  const char* text = std::getenv(WorkerPool::KillPartitionsVariable);
+  while (text && *text)
+  {
+    char* end = nullptr;
+    const long value = std::strtol(text, &end, 10);
+    if (end != text && value >= 0 && value <= INT_MAX)
+    {
+      partitions.push_back(static_cast<int>(value));
+    }
+    text = end != text ? end : text + 1;
+    text += *text == ',' ? 1 : 0;
+  }
+  std::sort(partitions.begin(), partitions.end());
+  return partitions;
+}
+
+// How a worker that broke off an exchange ended, from its wait status (-1: not known), for a
+// message that names the `program` it ran and the `piece` of the mesh it had.
+std::string describeWorkerEnd(int status, const std::string& program, const std::string& piece)
+{
+  if (status != -1 && WIFSIGNALED(status))
+  {
+    const int signal = WTERMSIG(status);
+    const char* name = sigabbrev_np(signal);
+    const std::string which = name ? std::string("SIG") + name : "signal " + std::to_string(signal);
+    switch (signal)
+    {
+      case SIGABRT:
+        return program + " aborted on this " + piece + ", " + which;
+      case SIGSEGV:
+      case SIGBUS:
+      case SIGFPE:
+      case SIGILL:
+        return program + " crashed on this " + piece + ", " + which;
+      case SIGKILL:
+        return "killed by SIGKILL, as by the system when memory runs out";
+      default:
+        return "ended by " + which;
+    }
+  }
+  if (status != -1 && WIFEXITED(status))
+  {
+    return "it exited with status " + std::to_string(WEXITSTATUS(status)) +
+      " after a broken exchange";
+  }
+  return "its exchange with the host broke off";
+}
+
+} // namespace
+
+WorkerPool::WorkerPool(int workers)
+  : Workers(workerCount(workers))
+  , Spawner(serveRequests, static_cast<int>(this->Workers.size())) // declared after Workers
+  , KillPartitions(partitionsToKill())
+{
+  for (Worker& worker : this->Workers)
+  {
+    this->start(worker);
+  }
+}
+
+WorkerPool::~WorkerPool()
+{
+  for (Worker& worker : this->Workers)
+  {
+    this->stop(worker, false); // the worker reads end of input and leaves; the spawner reaps it
+  }
+}
+
+bool WorkerPool::start(Worker& worker)
+{
+  return this->Spawner.spawn(worker.socket, worker.process);
+}
+
+int WorkerPool::stop(Worker& worker, bool kill)
+{
+  const int status = kill && worker.process > 0 ? this->Spawner.kill(worker.process) : -1;
+  if (worker.socket >= 0)
+  {
+    ::close(worker.socket);
+  }
+  worker.socket = -1;
+  worker.process = -1;
+  return status;
+}
+
+std::string WorkerPool::exchange(int index, time_t seconds, const std::string& program,
+  const std::string& piece, const std::function<bool(int)>& request,
+  const std::function<bool(int)>& readResult)
+{
+  Worker& worker =
+    this->Workers[static_cast<std::size_t>(std::max(index, 0)) % this->Workers.size()];
+  std::lock_guard<std::mutex> turn(worker.busy);
+  if (worker.socket < 0 && !this->start(worker))
+  {
+    return "could not start a worker process for " + program;
+  }
+  // The limit applies to each receive.
+  timeval limit;
+  limit.tv_sec = seconds;
+  limit.tv_usec = 0;
+  ::setsockopt(worker.socket, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof(limit));
+  std::int32_t ok = 0;
+  // A receive that fails at end of input leaves errno as it was: clear it, so that a stale
+  // EAGAIN from an earlier call on this thread does not pass a dead worker off as a timeout.
+  errno = 0;
+  const bool exchanged = request(worker.socket) && receiveAll(worker.socket, &ok, sizeof(ok));
+  if (exchanged && ok)
+  {
+    if (readResult(worker.socket))
+    {
+      return std::string();
+    }
+  }
+  else if (exchanged)
+  {
+    std::vector<char> message;
+    if (receiveArray(worker.socket, message))
+    {
+      return std::string(message.begin(), message.end());
+    }
+  }
+  // The worker died (an assertion in TetGen aborts it), hung, or the exchange broke: replace it.
+  const bool timedOut = errno == EAGAIN || errno == EWOULDBLOCK;
+  const int status = this->stop(worker, true);
+  if (timedOut)
+  {
+    return program + " took longer than " + std::to_string(seconds) + " s on this " + piece +
+      " and was stopped";
+  }
+  return "the " + program + " process stopped unexpectedly (" +
+    describeWorkerEnd(status, program, piece) + ")";
+}
+
+std::string WorkerPool::runTetGen(
+  int index, const tetgenio& in, const std::string& switches, tetgenio& out, int partition)
+{
+  // TetGen can also loop forever on some inputs: a call that takes far longer than its size
+  // warrants is abandoned. A remeshed partition sends no tets: about six per point.
+  const double tets = in.numberoftetrahedra > 0 ? in.numberoftetrahedra : 6.0 * in.numberofpoints;
+  const std::int32_t kind =
+    std::binary_search(this->KillPartitions.begin(), this->KillPartitions.end(), partition)
+    ? DieAfterReading
+    : RunTetGen;
+  return this->exchange(
+    index, static_cast<time_t>(30.0 + 0.002 * tets), "TetGen", "partition",
+    [&](int socket)
+    {
+      return sendAll(socket, &kind, sizeof(kind)) &&
+        sendArray(socket, switches.c_str(), static_cast<std::int64_t>(switches.size() + 1)) &&
+        sendMesh(socket, in, WithFaces);
+    },
+    [&](int socket) { return receiveMesh(socket, out); });
+}
+
+std::string WorkerPool::partitionGraph(
+  int index, const DualGraph& graph, int parts, bool contiguous, std::vector<int>& partOfVertex)
+{
+  const std::int32_t kind = PartitionGraph;
+  const std::int32_t settings[2] = { parts, contiguous ? 1 : 0 };
+  const std::size_t vertices = graph.offsets.empty() ? 0 : graph.offsets.size() - 1;
+  // METIS takes about half a second per million vertices; a call far beyond that is hung.
+  return this->exchange(
+    index, static_cast<time_t>(60.0 + 1e-4 * static_cast<double>(vertices)), "METIS", "chunk",
+    [&](int socket)
+    {
+      return sendAll(socket, &kind, sizeof(kind)) && sendAll(socket, settings, sizeof(settings)) &&
+        sendGraph(socket, graph);
+    },
+    [&](int socket)
+    { return receiveArray(socket, partOfVertex) && partOfVertex.size() == vertices; });
+}
+
+} // namespace cgmesh

@@ -1,0 +1,36 @@
+// The face-adjacency graph of a tet mesh (tets adjacent when they share a face), which METIS
+// partitions.
+#ifndef cgmesh_DualGraph_h
+#define cgmesh_DualGraph_h
+
+#include "Core/Status.h"
+#include "Core/Tasks.h"
+#include "Core/TetMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace cgmesh
+{
+
+// Compressed rows; each row ascending.
+struct DualGraph
+{
+  std::vector<std::int64_t> offsets; // size numberOfTets + 1
+  std::vector<CellId> neighbours;
+};
+
+// The dual graph of `tets`. A face found in more than two tets (invalid input) links none of
+// them, so the graph stays symmetric as METIS requires. Ranges of tets and of points run through
+// `parallelFor`; the graph does not depend on it.
+Status buildDualGraph(
+  const TetList& tets, DualGraph& graph, const ParallelFor& parallelFor = ParallelFor(runSerially));
+
+// The subgraph induced by the vertices at positions [begin, end) of `order`, renumbered by
+// position - begin; `positionOf` inverts `order`.
+DualGraph subgraphOfPositions(const DualGraph& graph, const std::vector<CellId>& order,
+  const std::vector<CellId>& positionOf, CellId begin, CellId end);
+
+} // namespace cgmesh
+
+#endif
