@@ -1,12 +1,44 @@
 #include "BoxSweep.h"
 
 #include "Coloring/PartitionColoring.h"
+#include "Core/LowestRootSets.h"
 #include "ParallelFor.h"
 
 #include <iterator>
 
 namespace cgmesh
 {
+
+// Union-find with each set's root its lowest point id, so the result does not depend on the
+// order of the unions.
+std::vector<std::size_t> boxOfClusters(
+  const AdaptationState& state, const std::vector<char>& flagged, const BoxLayout& layout)
+{
+  LowestRootSets<PointId> clusters(flagged.size());
+  for (const PartitionMesh& partition : state.partitions)
+  {
+    for (const Tet& tet : partition.tets)
+    {
+      PointId first = -1;
+      for (PointId p : tet)
+      {
+        if (flagged[p])
+        {
+          first = first < 0 ? clusters.root(p) : clusters.join(first, p);
+        }
+      }
+    }
+  }
+  std::vector<std::size_t> box(flagged.size(), 0);
+  for (std::size_t p = 0; p < flagged.size(); ++p)
+  {
+    if (flagged[p])
+    {
+      box[p] = layout.boxAt(layout.indexOf(state.coordinates.data() + 3 * clusters.root(p)));
+    }
+  }
+  return box;
+}
 
 Status runSweepOverBoxes(ColorLoopSetup sweep, const AdaptationOptions& options,
   const BoxLayout& layout, const std::vector<char>& moving, AdaptationState& state,

@@ -1,7 +1,6 @@
 #include "RemeshSweep.h"
 
 #include "BoxSweep.h"
-#include "Core/LowestRootSets.h"
 #include "Core/TetQuality.h"
 
 #include <algorithm>
@@ -59,39 +58,6 @@ Status flagAroundSlivers(int threads, const std::vector<char>* formerInterface,
       [&](const Tet& tet) { return touchesFlaggedPoint(tet, before); }, flagged, status);
   }
   return status;
-}
-
-// Joins the flagged points that are corners of one tet into clusters (union-find, each set's
-// root its lowest point id, so the result does not depend on the order of the unions) and names
-// for each flagged point the box of its cluster's root: a cluster's tets go into one box, never
-// cut by a box face.
-std::vector<std::size_t> boxOfClusters(
-  const AdaptationState& state, const std::vector<char>& flagged, const BoxLayout& layout)
-{
-  LowestRootSets<PointId> clusters(flagged.size());
-  for (const PartitionMesh& partition : state.partitions)
-  {
-    for (const Tet& tet : partition.tets)
-    {
-      PointId first = -1;
-      for (PointId p : tet)
-      {
-        if (flagged[p])
-        {
-          first = first < 0 ? clusters.root(p) : clusters.join(first, p);
-        }
-      }
-    }
-  }
-  std::vector<std::size_t> box(flagged.size(), 0);
-  for (std::size_t p = 0; p < flagged.size(); ++p)
-  {
-    if (flagged[p])
-    {
-      box[p] = layout.boxAt(layout.indexOf(state.coordinates.data() + 3 * clusters.root(p)));
-    }
-  }
-  return box;
 }
 
 // Meshes the clusters around the flagged slivers anew with `sweep`, each whole in one box.

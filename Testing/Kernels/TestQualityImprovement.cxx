@@ -4,9 +4,12 @@
 // input improved before refinement.
 #include "AdaptationDriver.h"
 #include "Core/TetQuality.h"
+#include "CubeGenerator.h"
 #include "FinFetGenerator.h"
 #include "Improvement/QualityImprover.h"
+#include "ImprovementSweep.h"
 #include "MeshChecks.h"
+#include "PhaseReporter.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
 #include "Validation/MeshValidation.h"
@@ -386,6 +389,80 @@ void test_input_improved_before_refinement()
 
 } // namespace
 
+// Slivers at a vertex that lies on a box face of the first sweep's layout along x and of the
+// shifted layout's along y (two boxes per axis over the unit cube: faces at 0.5, then at 0.25 and
+// 0.75): both layouts cut its ball and fix it. The third sweep puts the cluster around the work
+// left into one box, and the slivers are repaired; everything stays valid.
+void test_sweeps_reach_a_vertex_both_layouts_cut()
+{
+  TetMesh cube;
+  CHECK(generateKuhnCube(8, cube).ok());
+  PointId cutTwice = -1;
+  for (PointId p = 0; p < cube.numberOfPoints(); ++p)
+  {
+    const double* x = cube.point(p);
+    if (std::abs(x[0] - 0.5) < 1e-12 && std::abs(x[1] - 0.25) < 1e-12 &&
+      std::abs(x[2] - 0.625) < 1e-12)
+    {
+      cutTwice = p;
+    }
+  }
+  CHECK(cutTwice >= 0);
+  if (cutTwice < 0)
+  {
+    return;
+  }
+  AdaptationState state;
+  state.coordinates = cube.coordinates;
+  state.coordinates[3 * cutTwice + 2] += 0.9 * 0.125; // nearly onto its neighbours: slivers
+  state.inputPointCount = cube.numberOfPoints();
+  PartitionMesh all;
+  all.tets = cube.tets;
+  for (CellId t = 0; t < cube.numberOfTets(); ++t)
+  {
+    all.parentCells.push_back(t);
+  }
+  state.partitions.push_back(all);
+  state.improvementLeft.assign(1, ImprovementLeft());
+  auto worstAround = [&]()
+  {
+    double worst = 1;
+    for (const PartitionMesh& partition : state.partitions)
+    {
+      for (const Tet& tet : partition.tets)
+      {
+        if (std::find(tet.begin(), tet.end(), cutTwice) != tet.end())
+        {
+          worst = std::min(worst,
+            meanRatio(&state.coordinates[3 * tet[0]], &state.coordinates[3 * tet[1]],
+              &state.coordinates[3 * tet[2]], &state.coordinates[3 * tet[3]]));
+        }
+      }
+    }
+    return worst;
+  };
+  const double before = worstAround();
+  CHECK(before > 0 && before < 0.3);
+
+  ColorLoopSetup setup;
+  setup.threads = 2;
+  setup.improve = true;
+  const std::vector<char> formerInterface(cube.numberOfPoints(), 1);
+  AdaptationOptions options;
+  AdaptationSummary summary;
+  PhaseReporter reporter([](double, const char*) {});
+  CHECK(improveAcrossFormerInterfaces(setup, options, 2, formerInterface, state, summary, reporter)
+          .ok());
+  CHECK(worstAround() > 0.3);
+  TetMesh perturbed = cube, improved;
+  perturbed.coordinates = improved.coordinates = state.coordinates;
+  for (const PartitionMesh& partition : state.partitions)
+  {
+    improved.tets.insert(improved.tets.end(), partition.tets.begin(), partition.tets.end());
+  }
+  cgmesh_test::checkValidAndConserving(perturbed, improved);
+}
+
 int main()
 {
   test_smoothing_moves_free_vertex_only();
@@ -395,5 +472,6 @@ int main()
   test_device_refinement_with_improvement();
   test_improvement_over_several_passes();
   test_input_improved_before_refinement();
+  test_sweeps_reach_a_vertex_both_layouts_cut();
   return cgmesh_test::finish("TestQualityImprovement");
 }
