@@ -9,11 +9,11 @@
 namespace cgmesh
 {
 
-// Union-find with each set's root its lowest point id, so the result does not depend on the
-// order of the unions.
-std::vector<std::size_t> boxOfClusters(
-  const AdaptationState& state, const std::vector<char>& flagged, const BoxLayout& layout)
+std::vector<std::size_t> boxOfClusters(const AdaptationState& state, std::vector<char>& flagged,
+  const BoxLayout& layout, std::size_t largestCluster)
 {
+  // Union-find with each set's root its lowest point id, so the result does not depend on the
+  // order of the unions.
   LowestRootSets<PointId> clusters(flagged.size());
   for (const PartitionMesh& partition : state.partitions)
   {
@@ -29,10 +29,19 @@ std::vector<std::size_t> boxOfClusters(
       }
     }
   }
+  std::vector<std::size_t> pointsOfRoot(flagged.size(), 0);
+  for (std::size_t p = 0; p < flagged.size(); ++p)
+  {
+    pointsOfRoot[clusters.root(p)] += flagged[p] ? 1 : 0;
+  }
   std::vector<std::size_t> box(flagged.size(), 0);
   for (std::size_t p = 0; p < flagged.size(); ++p)
   {
-    if (flagged[p])
+    if (flagged[p] && pointsOfRoot[clusters.root(p)] > largestCluster)
+    {
+      flagged[p] = 0;
+    }
+    else if (flagged[p])
     {
       box[p] = layout.boxAt(layout.indexOf(state.coordinates.data() + 3 * clusters.root(p)));
     }

@@ -69,9 +69,10 @@ std::int64_t flagCornersOfSelectedTets(int threads, const AdaptationState& state
 
 // Joins the flagged points that are corners of one tet into clusters and names, for each flagged
 // point, the box of `layout` that holds its cluster's lowest point: given to runSweepOverBoxes,
-// a cluster's tets go into one box, never cut by a box face.
-std::vector<std::size_t> boxOfClusters(
-  const AdaptationState& state, const std::vector<char>& flagged, const BoxLayout& layout);
+// a cluster's tets go into one box, never cut by a box face. The points of a cluster of more
+// than `largestCluster` points are unflagged instead: one box would hold it all, a serial task.
+std::vector<std::size_t> boxOfClusters(const AdaptationState& state, std::vector<char>& flagged,
+  const BoxLayout& layout, std::size_t largestCluster = static_cast<std::size_t>(-1));
 
 // Moves the tets that touch a point flagged in `moving` into the boxes of `layout` and runs
 // `sweep` over them (its graph, colouring and colour count are the boxes'). The other tets stay

@@ -41,6 +41,10 @@ constexpr int SweepCount = 3;
 // target (0.5) it took the FinFET template run's improvement from 0.55 to 0.63 s for no
 // measurable gain; with this bar, 0.02 s.
 constexpr double ClusterSweepQuality = 0.3;
+// The third sweep's largest cluster, in corners of work: one box holds a cluster and one task
+// improves a box, so a cluster that grew along a whole interface would be a serial task. None
+// came near it: the Big cube's largest (Delaunay, 1,024 partitions, two passes) held 17 corners.
+constexpr std::size_t LargestCluster = 1000;
 
 // One improvement sweep over box partitions; `sweepIndex` 0 lays the boxes from the bounding
 // box's corner, 1 shifts them by half a box, 2 puts each cluster of the work left (its tets'
@@ -82,7 +86,13 @@ Status improveOverBoxes(const ColorLoopSetup& setup, const AdaptationOptions& op
     return runSweepOverBoxes(
       sweep, options, layout, cornersOfWork, state, summary, reporter, candidates);
   }
-  const std::vector<std::size_t> boxOfPoint = boxOfClusters(state, cornersOfWork, layout);
+  const std::vector<std::size_t> boxOfPoint =
+    boxOfClusters(state, cornersOfWork, layout, LargestCluster);
+  if (std::find(cornersOfWork.begin(), cornersOfWork.end(), 1) == cornersOfWork.end())
+  {
+    candidates = 0;
+    return status; // only clusters too large for one box
+  }
   return runSweepOverBoxes(
     sweep, options, layout, cornersOfWork, state, summary, reporter, candidates, &boxOfPoint);
 }

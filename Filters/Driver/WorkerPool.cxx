@@ -4,12 +4,15 @@
 #include "SocketTransfer.h"
 #include "WorkerMessages.h"
 
+#include "Core/Geometry.h"
+
 #define TETLIBRARY
 #include <tetgen.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <climits>
+#include <cmath>
 #include <csignal>
 #include <cstdint>
 #include <cstdlib>
@@ -183,6 +186,32 @@ std::string describeWorkerEnd(int status, const std::string& program, const std:
 
 } // namespace
 
+double tetgenTimeLimitSeconds(const tetgenio& in, const std::string& switches)
+{
+  // A remeshed partition sends no tets: about six per point.
+  const double tets = in.numberoftetrahedra > 0 ? in.numberoftetrahedra : 6.0 * in.numberofpoints;
+  const std::size_t bound = switches.find('a');
+  const double volumeBound =
+    bound == std::string::npos ? 0 : std::strtod(switches.c_str() + bound + 1, nullptr);
+  if (!(volumeBound > 0) || in.numberoftetrahedra <= 0 || in.numberofcorners < 4 ||
+    switches.find('m') != std::string::npos)
+  {
+    return 30.0 + 0.002 * tets;
+  }
+  double volume = 0;
+  for (int t = 0; t < in.numberoftetrahedra; ++t)
+  {
+    const int* corners = in.tetrahedronlist + static_cast<std::size_t>(t) * in.numberofcorners;
+    const double* p[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      p[k] = in.pointlist + 3 * static_cast<std::size_t>(corners[k] - in.firstnumber);
+    }
+    volume += std::abs(signedVolume6(p[0], p[1], p[2], p[3])) / 6.0;
+  }
+  return std::max(10.0, 2.5e-4 * (tets + 4.0 * volume / volumeBound));
+}
+
 WorkerPool::WorkerPool(int workers)
   : Workers(workerCount(workers))
   , Spawner(serveRequests, static_cast<int>(this->Workers.size())) // declared after Workers
@@ -270,15 +299,12 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
 std::string WorkerPool::runTetGen(
   int index, const tetgenio& in, const std::string& switches, tetgenio& out, int partition)
 {
-  // TetGen can also loop forever on some inputs: a call that takes far longer than its size
-  // warrants is abandoned. A remeshed partition sends no tets: about six per point.
-  const double tets = in.numberoftetrahedra > 0 ? in.numberoftetrahedra : 6.0 * in.numberofpoints;
   const std::int32_t kind =
     std::binary_search(this->KillPartitions.begin(), this->KillPartitions.end(), partition)
     ? DieAfterReading
     : RunTetGen;
   return this->exchange(
-    index, static_cast<time_t>(30.0 + 0.002 * tets), "TetGen", "partition",
+    index, static_cast<time_t>(tetgenTimeLimitSeconds(in, switches)), "TetGen", "partition",
     [&](int socket)
     {
       return sendAll(socket, &kind, sizeof(kind)) &&

@@ -28,6 +28,12 @@ class tetgenio;
 namespace cgmesh
 {
 
+// How long a TetGen call with `switches` on `in` may run before it counts as looping. With a
+// volume bound (a) on given tets, about 100 times what its output should take (TetGen makes
+// about half a million tets a second; the output is forecast as the tets given plus four per
+// volume bound of their volume), at least 10 s; otherwise 30 s plus 2 ms per tet given.
+double tetgenTimeLimitSeconds(const tetgenio& in, const std::string& switches);
+
 class WorkerPool
 {
 public:

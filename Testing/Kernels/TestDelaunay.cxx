@@ -1,6 +1,7 @@
 // Delaunay refinement through adaptMesh(): conformity, conserved volumes and material interfaces,
 // identical output for any thread count and for serialised TetGen calls, the volume bound inside
-// partitions, and the template fallback when TetGen fails or its worker process dies.
+// partitions, the template fallback when TetGen fails or its worker process dies, and the time a
+// TetGen call may take.
 #include "AdaptationDriver.h"
 #include "Core/Geometry.h"
 #include "CubeGenerator.h"
@@ -392,6 +393,26 @@ void test_tampered_tetgen_output_is_refused()
 
 } // namespace
 
+// The time a TetGen call may take: with a volume bound on given tets, about 100 times what its
+// forecast output takes and at least 10 s; without one (or with sizes per point), 30 s plus 2 ms a
+// tet, and for a remeshed partition (no tets) six tets a point.
+void test_tetgen_time_limit_follows_the_forecast_output()
+{
+  tetgenio in;
+  in.numberofpoints = 4;
+  in.pointlist = new REAL[12]{ 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 }; // volume 1/6
+  in.numberoftetrahedra = 1;
+  in.numberofcorners = 4;
+  in.tetrahedronlist = new int[4]{ 0, 1, 2, 3 };
+  in.firstnumber = 0;
+  CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq2a0.001"), 10.0, 1e-12);
+  CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq2a1e-7"), 2.5e-4 * (1 + 4.0 / 6.0 / 1e-7), 1e-6);
+  CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq2"), 30.002, 1e-12);
+  CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq1000a1e-7m"), 30.002, 1e-12);
+  in.numberoftetrahedra = 0;
+  CHECK_CLOSE(tetgenTimeLimitSeconds(in, "pAYMQnq2a1e-7"), 30.0 + 0.002 * 24, 1e-12);
+}
+
 int main()
 {
   test_conforming_and_identical_across_threads();
@@ -401,5 +422,6 @@ int main()
   test_worker_deaths_fall_back_like_failures();
   test_bad_delaunay_options_are_refused();
   test_tampered_tetgen_output_is_refused();
+  test_tetgen_time_limit_follows_the_forecast_output();
   return cgmesh_test::finish("TestDelaunay");
 }
