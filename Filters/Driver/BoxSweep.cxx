@@ -32,19 +32,25 @@ std::vector<std::size_t> boxOfClusters(const AdaptationState& state, std::vector
   std::vector<std::size_t> pointsOfRoot(flagged.size(), 0);
   for (std::size_t p = 0; p < flagged.size(); ++p)
   {
-    pointsOfRoot[clusters.root(p)] += flagged[p] ? 1 : 0;
+    if (flagged[p])
+    {
+      ++pointsOfRoot[clusters.root(p)];
+    }
   }
   std::vector<std::size_t> box(flagged.size(), 0);
   for (std::size_t p = 0; p < flagged.size(); ++p)
   {
-    if (flagged[p] && pointsOfRoot[clusters.root(p)] > largestCluster)
+    if (!flagged[p])
+    {
+      continue;
+    }
+    const PointId root = clusters.root(p);
+    if (pointsOfRoot[root] > largestCluster)
     {
       flagged[p] = 0;
+      continue;
     }
-    else if (flagged[p])
-    {
-      box[p] = layout.boxAt(layout.indexOf(state.coordinates.data() + 3 * clusters.root(p)));
-    }
+    box[p] = layout.boxAt(layout.indexOf(state.coordinates.data() + 3 * root));
   }
   return box;
 }

@@ -6,6 +6,7 @@
 #include "Core/Status.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -60,6 +61,26 @@ inline Status offsetsOfRanges(const ParallelFor& parallelFor, std::int64_t count
     offsets[r] += offsets[r - 1];
   }
   return status;
+}
+
+// Where each range of IndicesPerCopyRange indices puts its items when counts[i] holds index i's
+// (atomic, as the loops that filled them ran concurrently): offsetsOfRanges over the counts.
+template <typename Count>
+Status offsetsOfAtomicCounts(const std::vector<std::atomic<Count>>& counts,
+  const ParallelFor& parallelFor, std::vector<std::int64_t>& offsets)
+{
+  return offsetsOfRanges(
+    parallelFor, static_cast<std::int64_t>(counts.size()), IndicesPerCopyRange,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      std::int64_t sum = 0;
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        sum += counts[i].load(std::memory_order_relaxed);
+      }
+      return sum;
+    },
+    offsets);
 }
 
 } // namespace cgmesh

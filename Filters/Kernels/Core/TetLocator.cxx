@@ -32,7 +32,7 @@ TetLocator::TetLocator(const TetList& tets, CoordinatesOf coordinatesOf)
     for (int k = 0; k < 4; ++k)
     {
       const double* a = k == 0 ? c[1] : c[0];
-      const double* b = c[k == 1 ? 2 : (k == 0 ? 2 : 1)];
+      const double* b = c[k <= 1 ? 2 : 1];
       const double* d = c[k == 3 ? 2 : 3];
       const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
       const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };

@@ -13,25 +13,6 @@
 namespace cgmesh
 {
 
-// Where each range of IndicesPerCopyRange points puts its marked points, marks counted by ranges
-// (see offsetsOfRanges): one entry per range, then the number of marked points.
-inline Status offsetsOfMarkedPoints(const std::vector<std::atomic<unsigned char>>& marks,
-  const ParallelFor& parallelFor, std::vector<std::int64_t>& offsets)
-{
-  return offsetsOfRanges(
-    parallelFor, static_cast<std::int64_t>(marks.size()), IndicesPerCopyRange,
-    [&](std::int64_t begin, std::int64_t end)
-    {
-      std::int64_t count = 0;
-      for (std::int64_t p = begin; p < end; ++p)
-      {
-        count += marks[p].load(std::memory_order_relaxed);
-      }
-      return count;
-    },
-    offsets);
-}
-
 // The ids of the used points in ascending order. Ranges of tets mark the points concurrently
 // (every order of the stores gives the same marks); the marks are counted by ranges of points,
 // then the ids written at their range's offset.
@@ -54,7 +35,7 @@ inline Status listUsedPoints(
   std::vector<std::int64_t> firstOfRange;
   if (status.ok())
   {
-    status = offsetsOfMarkedPoints(used, parallelFor, firstOfRange);
+    status = offsetsOfAtomicCounts(used, parallelFor, firstOfRange);
   }
   if (!status.ok())
   {

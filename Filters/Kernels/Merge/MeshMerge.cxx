@@ -1,7 +1,6 @@
 #include "Merge/MeshMerge.h"
 
 #include "Core/TetLocator.h"
-#include "Core/UsedPoints.h"
 
 #include <algorithm>
 #include <atomic>
@@ -173,7 +172,7 @@ Status numberUsedPoints(const std::vector<PartitionMesh>& partitions, PointId gl
   std::vector<PointId> firstOfRange;
   if (status.ok())
   {
-    status = offsetsOfMarkedPoints(used, parallelFor, firstOfRange);
+    status = offsetsOfAtomicCounts(used, parallelFor, firstOfRange);
   }
   if (!status.ok())
   {

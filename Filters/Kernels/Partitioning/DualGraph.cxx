@@ -212,4 +212,28 @@ DualGraph subgraphOfPositions(const DualGraph& graph, const std::vector<CellId>&
   return sub;
 }
 
+VertexGroups groupVertices(const std::vector<int>& groupOf, int groups)
+{
+  VertexGroups grouped;
+  grouped.groupStart.assign(static_cast<std::size_t>(groups) + 1, 0);
+  for (int group : groupOf)
+  {
+    ++grouped.groupStart[group + 1];
+  }
+  for (int g = 0; g < groups; ++g)
+  {
+    grouped.groupStart[g + 1] += grouped.groupStart[g];
+  }
+  grouped.order.resize(groupOf.size());
+  grouped.positionOf.resize(groupOf.size());
+  std::vector<CellId> next(grouped.groupStart.begin(), grouped.groupStart.end() - 1);
+  for (std::size_t v = 0; v < groupOf.size(); ++v)
+  {
+    const CellId position = next[groupOf[v]]++;
+    grouped.order[position] = static_cast<CellId>(v);
+    grouped.positionOf[v] = position;
+  }
+  return grouped;
+}
+
 } // namespace cgmesh

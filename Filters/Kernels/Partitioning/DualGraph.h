@@ -31,6 +31,19 @@ Status buildDualGraph(
 DualGraph subgraphOfPositions(const DualGraph& graph, const std::vector<CellId>& order,
   const std::vector<CellId>& positionOf, CellId begin, CellId end);
 
+// Vertices listed group by group, ascending within each: group g holds the positions
+// [groupStart[g], groupStart[g + 1]) of `order`, and `positionOf` inverts `order`, as
+// subgraphOfPositions() takes them.
+struct VertexGroups
+{
+  std::vector<CellId> order;
+  std::vector<CellId> positionOf;
+  std::vector<CellId> groupStart; // one entry per group, then the vertex count
+};
+
+// The groups of `groupOf` (a group in [0, groups) per vertex), by a counting sort.
+VertexGroups groupVertices(const std::vector<int>& groupOf, int groups);
+
 } // namespace cgmesh
 
 #endif

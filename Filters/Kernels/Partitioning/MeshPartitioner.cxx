@@ -91,35 +91,6 @@ Status partitionGraphWithMetis(
 namespace
 {
 
-// The subgraph induced by `vertices` (ascending), renumbered 0..n-1 in that order.
-DualGraph inducedSubgraph(
-  const DualGraph& graph, const std::vector<CellId>& vertices, std::vector<CellId>& localIndexOf)
-{
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-  {
-    localIndexOf[vertices[i]] = static_cast<CellId>(i);
-  }
-  DualGraph sub;
-  sub.offsets.push_back(0);
-  for (CellId v : vertices)
-  {
-    for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
-    {
-      const CellId local = localIndexOf[graph.neighbours[k]];
-      if (local >= 0)
-      {
-        sub.neighbours.push_back(local);
-      }
-    }
-    sub.offsets.push_back(static_cast<std::int64_t>(sub.neighbours.size()));
-  }
-  for (CellId v : vertices)
-  {
-    localIndexOf[v] = -1;
-  }
-  return sub;
-}
-
 // Shares of `total` for parts of the given sizes: proportional, at most the size, at least 1 for
 // a non-empty part (largest remainders first, ties to the lower index). Needs total <= sum.
 std::vector<int> proportionalShares(const std::vector<std::int64_t>& sizes, int total)
@@ -172,49 +143,29 @@ Status partitionHierarchically(const DualGraph& graph, int parts,
   {
     return status;
   }
-  std::vector<std::vector<CellId>> members(coarseCount);
-  std::vector<CellId> indexInPart(vertexCount);
-  for (std::size_t v = 0; v < vertexCount; ++v)
-  {
-    indexInPart[v] = static_cast<CellId>(members[coarsePart[v]].size());
-    members[coarsePart[v]].push_back(static_cast<CellId>(v));
-  }
+  const VertexGroups coarse = groupVertices(coarsePart, coarseCount);
   std::vector<std::int64_t> sizes(coarseCount);
   for (int c = 0; c < coarseCount; ++c)
   {
-    sizes[c] = static_cast<std::int64_t>(members[c].size());
+    sizes[c] = coarse.groupStart[c + 1] - coarse.groupStart[c];
   }
   const std::vector<int> shares = proportionalShares(sizes, parts);
-  std::vector<std::vector<int>> local(coarseCount);
-  for (int c = 0; c < coarseCount && status.ok(); ++c)
-  {
-    DualGraph sub;
-    sub.offsets.push_back(0);
-    for (CellId v : members[c])
-    {
-      for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
-      {
-        const CellId w = graph.neighbours[k];
-        if (coarsePart[w] == c)
-        {
-          sub.neighbours.push_back(indexInPart[w]);
-        }
-      }
-      sub.offsets.push_back(static_cast<std::int64_t>(sub.neighbours.size()));
-    }
-    status = partitionGraphWithMetis(sub, shares[c], local[c], options.contiguous);
-  }
-  if (!status.ok())
-  {
-    return status;
-  }
   partOfVertex.assign(vertexCount, 0);
   int first = 0;
   for (int c = 0; c < coarseCount; ++c)
   {
-    for (std::size_t i = 0; i < members[c].size(); ++i)
+    const CellId begin = coarse.groupStart[c], end = coarse.groupStart[c + 1];
+    std::vector<int> local;
+    status = partitionGraphWithMetis(
+      subgraphOfPositions(graph, coarse.order, coarse.positionOf, begin, end), shares[c], local,
+      options.contiguous);
+    if (!status.ok())
     {
-      partOfVertex[members[c][i]] = first + local[c][i];
+      return status;
+    }
+    for (CellId position = begin; position < end; ++position)
+    {
+      partOfVertex[coarse.order[position]] = first + local[position - begin];
     }
     first += shares[c];
   }
@@ -274,12 +225,13 @@ Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
   std::vector<int> regionIds = mesh.regions;
   std::sort(regionIds.begin(), regionIds.end());
   regionIds.erase(std::unique(regionIds.begin(), regionIds.end()), regionIds.end());
-  std::vector<std::vector<CellId>> tetsOfRegion(regionIds.size());
+  std::vector<int> regionIndexOf(mesh.tets.size());
   for (CellId t = 0; t < mesh.numberOfTets(); ++t)
   {
-    const auto position = std::lower_bound(regionIds.begin(), regionIds.end(), mesh.regions[t]);
-    tetsOfRegion[position - regionIds.begin()].push_back(t);
+    regionIndexOf[t] = static_cast<int>(
+      std::lower_bound(regionIds.begin(), regionIds.end(), mesh.regions[t]) - regionIds.begin());
   }
+  const VertexGroups regions = groupVertices(regionIndexOf, static_cast<int>(regionIds.size()));
 
   DualGraph graph;
   if (partitionsPerRegion > 1)
@@ -290,26 +242,25 @@ Status partitionByRegion(const TetMesh& mesh, int partitionsPerRegion,
       return built;
     }
   }
-  std::vector<CellId> localIndexOf(mesh.tets.size(), -1);
   partitionOfCell.assign(mesh.tets.size(), 0);
   numberOfPartitions = 0;
-  for (const std::vector<CellId>& tets : tetsOfRegion)
+  for (std::size_t r = 0; r < regionIds.size(); ++r)
   {
-    const int parts = static_cast<int>(
-      std::min<std::int64_t>(partitionsPerRegion, static_cast<std::int64_t>(tets.size())));
-    std::vector<int> local(tets.size(), 0);
+    const CellId begin = regions.groupStart[r], end = regions.groupStart[r + 1];
+    const int parts = static_cast<int>(std::min<std::int64_t>(partitionsPerRegion, end - begin));
+    std::vector<int> local(static_cast<std::size_t>(end - begin), 0);
     if (parts > 1)
     {
-      Status status =
-        partitionGraphWithMetis(inducedSubgraph(graph, tets, localIndexOf), parts, local);
+      Status status = partitionGraphWithMetis(
+        subgraphOfPositions(graph, regions.order, regions.positionOf, begin, end), parts, local);
       if (!status.ok())
       {
         return status;
       }
     }
-    for (std::size_t i = 0; i < tets.size(); ++i)
+    for (CellId position = begin; position < end; ++position)
     {
-      partitionOfCell[tets[i]] = numberOfPartitions + local[i];
+      partitionOfCell[regions.order[position]] = numberOfPartitions + local[position - begin];
     }
     numberOfPartitions += parts;
   }

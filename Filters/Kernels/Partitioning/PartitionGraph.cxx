@@ -118,18 +118,7 @@ Status collectInterfaceGroups(const std::vector<TetRun>& runs, PointId numberOfP
     return status;
   }
   std::vector<std::int64_t> rangeStart; // never empty: one entry per range, then the total
-  status = offsetsOfRanges(
-    parallelFor, numberOfPoints, IndicesPerCopyRange,
-    [&](std::int64_t begin, std::int64_t end)
-    {
-      std::int64_t sum = 0;
-      for (std::int64_t p = begin; p < end; ++p)
-      {
-        sum += cursor[p].load(std::memory_order_relaxed);
-      }
-      return sum;
-    },
-    rangeStart);
+  status = offsetsOfAtomicCounts(cursor, parallelFor, rangeStart);
   const std::int64_t pointRanges = static_cast<std::int64_t>(rangeStart.size()) - 1;
   std::vector<std::int64_t> start(points + 1, 0);
   if (status.ok())
