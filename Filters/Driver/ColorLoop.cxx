@@ -305,8 +305,10 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
         points.provisionalSizes = &refinement.newSizes;
       }
       ImprovementLeft& left = state.improvementLeft[p];
-      outcomes[i] = improvePartition(state.partitions[p], points, iteration.setup.improvement,
-        statistics[i], refinement.movedPoints, &left.tets);
+      const bool listed = iteration.refinement.improvementTarget > 0;
+      outcomes[i] =
+        improvePartition(state.partitions[p], points, iteration.setup.improvement, statistics[i],
+          refinement.movedPoints, &left.tets, listed ? &refinement.tetsToScreen : nullptr);
       left.known = outcomes[i].ok();
       left.tetCount = state.partitions[p].tets.size();
     });
@@ -525,6 +527,13 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     context.refinement.sizes = state.sizes.empty() ? nullptr : &state.sizes;
     context.refinement.templates = setup.templates;
     context.refinement.orderCornersByCoordinates = setup.orderCornersByCoordinates;
+    // Template children of good parents are good (FullSplitChildQuality): refinement lists the
+    // others, and improvement screens those alone. Short edges have no such bound.
+    if (setup.refine && setup.improve && setup.method == RefinementMethod::Template &&
+      setup.improvement.improve && !setup.improvement.coarsen)
+    {
+      context.refinement.improvementTarget = setup.improvement.targetQuality;
+    }
     std::int64_t forecastTets = 0;
     Status forecast = checkForecastSize(setup, context.refinement, state, forecastTets);
     if (!forecast.ok())

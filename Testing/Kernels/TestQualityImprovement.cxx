@@ -10,6 +10,7 @@
 #include "ImprovementSweep.h"
 #include "MeshChecks.h"
 #include "PhaseReporter.h"
+#include "Refinement/PartitionRefiner.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
 #include "Validation/MeshValidation.h"
@@ -227,6 +228,68 @@ void test_tets_left_are_those_still_needing_work()
     CHECK(statistics.edgeRemovals + statistics.faceSwaps + statistics.vertexMoves > 0);
     CHECK(!coarsen || statistics.edgeCollapses > 0);
   }
+}
+
+// Refinement's list of the tets that may be under the target (PartitionRefinement::tetsToScreen)
+// loses no work: the device meshed by TetGen (poor tets in it), refined as one partition with
+// full and partial splits, is improved the same with the list as with every tet screened.
+void test_screening_the_listed_tets_finds_all_work()
+{
+  TetMesh input;
+  CHECK(generateFinFetWithTetGen(15000, input).ok());
+  PartitionMesh partition;
+  partition.tets = input.tets;
+  partition.regions = input.regions;
+  for (std::size_t t = 0; t < input.tets.size(); ++t)
+  {
+    partition.parentCells.push_back(static_cast<CellId>(t));
+  }
+  std::vector<double> lengths;
+  for (const Tet& tet : input.tets)
+  {
+    lengths.push_back(std::sqrt(squaredDistance(input.point(tet[0]), input.point(tet[1]))));
+  }
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 4, lengths.end());
+  const std::vector<char> noInterface(input.numberOfPoints(), 0);
+  const TemplateTable templates;
+  RefinementContext context;
+  context.coordinates = &input.coordinates;
+  context.interfaceVertex = &noInterface;
+  context.squaredThreshold = lengths[lengths.size() / 4] * lengths[lengths.size() / 4];
+  context.templates = &templates;
+  const ImprovementParameters parameters;
+  context.improvementTarget = parameters.targetQuality;
+  PartitionRefinement refinement;
+  CHECK(refinePartition(partition, context, PostedSplits(), refinement).ok());
+  const std::vector<std::size_t> listed = refinement.tetsToScreen;
+  std::cout << listed.size() << " of " << partition.tets.size() << " refined tets listed\n";
+  CHECK(!listed.empty() && listed.size() < partition.tets.size());
+
+  struct Outcome
+  {
+    PartitionMesh partition;
+    std::vector<double> coordinates, newCoordinates;
+    ImprovementStatistics statistics;
+    std::vector<std::size_t> left;
+  };
+  auto improve = [&](const std::vector<std::size_t>* tetsToScreen)
+  {
+    Outcome outcome{ partition, input.coordinates, refinement.newCoordinates, {}, {} };
+    PartitionPoints points{ &outcome.coordinates, &outcome.newCoordinates };
+    std::vector<PointId> moved;
+    CHECK(improvePartition(
+      outcome.partition, points, parameters, outcome.statistics, moved, &outcome.left, tetsToScreen)
+            .ok());
+    return outcome;
+  };
+  const Outcome all = improve(nullptr), screened = improve(&listed);
+  CHECK(all.statistics.poorTets > 0 && all.statistics.edgeRemovals > 0);
+  CHECK_EQUAL(screened.statistics.poorTets, all.statistics.poorTets);
+  CHECK_EQUAL(screened.statistics.edgeRemovals, all.statistics.edgeRemovals);
+  CHECK_EQUAL(screened.statistics.vertexMoves, all.statistics.vertexMoves);
+  CHECK(screened.partition.tets == all.partition.tets);
+  CHECK(screened.coordinates == all.coordinates && screened.newCoordinates == all.newCoordinates);
+  CHECK(screened.left == all.left);
 }
 
 // Moved and derived points are relocated in the input: linear point data stays exact.
@@ -469,6 +532,7 @@ int main()
   test_edge_removal_three_to_two();
   test_collapse_only_where_flagged();
   test_tets_left_are_those_still_needing_work();
+  test_screening_the_listed_tets_finds_all_work();
   test_device_refinement_with_improvement();
   test_improvement_over_several_passes();
   test_input_improved_before_refinement();

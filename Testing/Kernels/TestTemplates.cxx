@@ -1,12 +1,16 @@
 // Template refinement of a single tet: every split pattern tiles its parent with positive tets,
-// and two tets sharing a face always triangulate it identically.
+// two tets sharing a face always triangulate it identically, and full splits keep 3/4 of their
+// parent's mean ratio, which lets refinement leave the children of good parents unscreened.
 #include "Core/Geometry.h"
+#include "Core/TetQuality.h"
+#include "Refinement/PartitionRefiner.h"
 #include "Refinement/TemplateTable.h"
 #include "TestHarness.h"
 #include "Validation/MeshValidation.h"
 
 #include <algorithm>
 #include <array>
+#include <random>
 #include <set>
 
 using namespace cgmesh;
@@ -230,11 +234,108 @@ void test_shared_face_agreement()
   CHECK_EQUAL(comparisons, 120 * 8 * 8 * 8);
 }
 
+// Random tets of every shape, slivers included, refined on their own: every child of a full split
+// keeps at least FullSplitChildQuality of its parent's mean ratio, and the bound is tight. With
+// an improvement target, refinement lists every child under it, and leaves out only children of
+// full splits whose parent reaches target / FullSplitChildQuality.
+void test_full_split_children_keep_three_quarters()
+{
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  PartitionMesh soup;
+  std::vector<double> coordinates;
+  while (soup.tets.size() < 20000)
+  {
+    double corners[4][3];
+    for (auto& corner : corners)
+    {
+      for (double& value : corner)
+      {
+        value = coordinate(random);
+      }
+    }
+    const double volume6 = signedVolume6(corners[0], corners[1], corners[2], corners[3]);
+    if (std::abs(volume6) < 1e-9)
+    {
+      continue;
+    }
+    const PointId first = static_cast<PointId>(coordinates.size() / 3);
+    for (int c : { 0, volume6 > 0 ? 1 : 2, volume6 > 0 ? 2 : 1, 3 })
+    {
+      coordinates.insert(coordinates.end(), corners[c], corners[c] + 3);
+    }
+    soup.tets.push_back({ first, first + 1, first + 2, first + 3 });
+    soup.parentCells.push_back(static_cast<CellId>(soup.tets.size() - 1));
+  }
+  const double target = 0.5;
+  const TemplateTable table;
+  const std::vector<char> noInterface(coordinates.size() / 3, 0);
+  // Every edge split, then only edges longer than 1: full and partial splits side by side.
+  for (double threshold : { 0.0, 1.0 })
+  {
+    RefinementContext context;
+    context.coordinates = &coordinates;
+    context.interfaceVertex = &noInterface;
+    context.squaredThreshold = threshold * threshold;
+    context.templates = &table;
+    context.improvementTarget = target;
+    PartitionMesh refined = soup;
+    PartitionRefinement refinement;
+    std::vector<std::size_t> origins;
+    CHECK(
+      refinePartition(refined, context, PostedSplits(), refinement, EdgeFilter(), &origins).ok());
+    const auto at = [&](PointId id)
+    {
+      return pointCoordinates(coordinates, refinement.newCoordinates, id);
+    };
+    const auto quality = [&](const Tet& tet)
+    {
+      return meanRatio(at(tet[0]), at(tet[1]), at(tet[2]), at(tet[3]));
+    };
+    const std::vector<std::size_t>& listed = refinement.tetsToScreen;
+    CHECK(std::adjacent_find(listed.begin(), listed.end(),
+            [](std::size_t a, std::size_t b) { return a >= b; }) == listed.end());
+    double worstRatio = 1;
+    std::size_t fullSplitChildren = 0, poorChildren = 0;
+    for (std::size_t t = 0; t < refined.tets.size(); ++t)
+    {
+      const Tet& parent = soup.tets[origins[t]];
+      bool fullSplit = true;
+      for (const auto& edge : TetEdgeCorners)
+      {
+        fullSplit = fullSplit &&
+          squaredDistance(at(parent[edge[0]]), at(parent[edge[1]])) > context.squaredThreshold;
+      }
+      const double childQuality = quality(refined.tets[t]);
+      const double parentQuality = quality(parent);
+      if (fullSplit)
+      {
+        ++fullSplitChildren;
+        worstRatio = std::min(worstRatio, childQuality / parentQuality);
+      }
+      const bool isListed = std::binary_search(listed.begin(), listed.end(), t);
+      poorChildren += childQuality < target ? 1 : 0;
+      CHECK(isListed || childQuality >= target);
+      CHECK(isListed || (fullSplit && parentQuality >= target / FullSplitChildQuality));
+    }
+    std::cout << "threshold " << threshold << ": " << refined.tets.size() << " tets, "
+              << fullSplitChildren << " from full splits (worst quality ratio to the parent "
+              << worstRatio << "), " << poorChildren << " under " << target << ", " << listed.size()
+              << " listed\n";
+    CHECK(fullSplitChildren > 0 && worstRatio >= FullSplitChildQuality * (1 - 1e-12));
+    CHECK(worstRatio < FullSplitChildQuality + 0.05); // tight: some child comes close
+    CHECK(poorChildren > 0 && listed.size() < refined.tets.size());
+    CHECK(threshold > 0 || fullSplitChildren == refined.tets.size());
+    CHECK(threshold == 0 || fullSplitChildren < refined.tets.size());
+  }
+}
+
 } // namespace
 
 int main()
 {
   test_every_template_case();
   test_shared_face_agreement();
+  test_full_split_children_keep_three_quarters();
   return cgmesh_test::finish("TestTemplates");
 }

@@ -473,13 +473,17 @@ bool isPoor(const Tet& tet, const PartitionPoints& points, const ImprovementPara
 
 // The vertices work starts from: every corner of a poor tet (edge removal, swaps and smoothing
 // reach them all) and, with coarsening, both ends of every short edge (a collapse rewrites the
-// ball of one and checks the link of the other). Counts the poor tets.
+// ball of one and checks the link of the other). Counts the poor tets. Only the tets listed in
+// `tetsToScreen` are looked at, when given.
 PointIdSet verticesOfWork(const PartitionMesh& partition, const PartitionPoints& points,
-  const ImprovementParameters& parameters, std::int64_t& poorTets)
+  const ImprovementParameters& parameters, const std::vector<std::size_t>* tetsToScreen,
+  std::int64_t& poorTets)
 {
   PointIdSet vertices;
-  for (const Tet& tet : partition.tets)
+  const std::size_t count = tetsToScreen ? tetsToScreen->size() : partition.tets.size();
+  for (std::size_t i = 0; i < count; ++i)
   {
+    const Tet& tet = partition.tets[tetsToScreen ? (*tetsToScreen)[i] : i];
     if (isPoor(tet, points, parameters))
     {
       ++poorTets;
@@ -588,7 +592,8 @@ bool needsImprovement(
 
 Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   const ImprovementParameters& parameters, ImprovementStatistics& statistics,
-  std::vector<PointId>& movedPoints, std::vector<std::size_t>* tetsLeft)
+  std::vector<PointId>& movedPoints, std::vector<std::size_t>* tetsLeft,
+  const std::vector<std::size_t>* tetsToScreen)
 {
   if (tetsLeft)
   {
@@ -606,7 +611,8 @@ Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
     return Status::success();
   }
   std::int64_t poorTets = 0;
-  const PointIdSet vertices = improvement::verticesOfWork(partition, points, parameters, poorTets);
+  const PointIdSet vertices =
+    improvement::verticesOfWork(partition, points, parameters, tetsToScreen, poorTets);
   statistics.poorTets += poorTets;
   if (vertices.empty())
   {

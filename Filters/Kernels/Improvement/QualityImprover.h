@@ -99,9 +99,12 @@ bool needsImprovement(
 // `tetsLeft`, when given, becomes the indices (ascending) of the partition's tets that still need
 // improvement (needsImprovement() with `parameters`) afterwards: every other tet passes it, so a
 // later search for work may look at these alone while the partition stays as it is.
+// `tetsToScreen`, when given, are the indices of the only tets that may need improvement (as
+// refinement lists them, PartitionRefinement::tetsToScreen): work is looked for among them alone.
 Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
   const ImprovementParameters& parameters, ImprovementStatistics& statistics,
-  std::vector<PointId>& movedPoints, std::vector<std::size_t>* tetsLeft = nullptr);
+  std::vector<PointId>& movedPoints, std::vector<std::size_t>* tetsLeft = nullptr,
+  const std::vector<std::size_t>* tetsToScreen = nullptr);
 
 } // namespace cgmesh
 

@@ -1,6 +1,7 @@
 #include "Refinement/PartitionRefiner.h"
 
 #include "Core/Geometry.h"
+#include "Core/TetQuality.h"
 #include "Refinement/SizeField.h"
 
 #include <algorithm>
@@ -247,6 +248,13 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
   {
     SplitSession session(context, received, refinement);
     session.reserve(partition.tets.size());
+    const bool listsTetsToScreen = context.improvementTarget > 0;
+    refinement.tetsToScreen.clear();
+    // The parents whose children all clear the target; a hair above the bound, so that rounding
+    // in the midpoints cannot put a child just under it.
+    const double clearingParentQuality =
+      context.improvementTarget / FullSplitChildQuality * (1 + 1e-9);
+    const bool parentsMayClear = listsTetsToScreen && clearingParentQuality <= 1;
     const bool hasRegions = !partition.regions.empty();
     PartitionMesh refined;
     refined.tets.reserve(partition.tets.size() * 2);
@@ -282,6 +290,10 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       };
       if (splitMask == 0)
       {
+        if (listsTetsToScreen)
+        {
+          refinement.tetsToScreen.push_back(refined.tets.size());
+        }
         emit(tet);
         if (origins)
         {
@@ -294,8 +306,15 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
         : context.templates->partialSplit(splitMask,
             cornerRanks(
               tet, context, [&session](PointId id) { return session.coordinatesOf(id); }));
+      const bool childrenClear = parentsMayClear && splitMask == 63 &&
+        !meanRatioBelow(session.coordinatesOf(tet[0]), session.coordinatesOf(tet[1]),
+          session.coordinatesOf(tet[2]), session.coordinatesOf(tet[3]), clearingParentQuality);
       for (const LocalTet& child : children)
       {
+        if (listsTetsToScreen && !childrenClear)
+        {
+          refinement.tetsToScreen.push_back(refined.tets.size());
+        }
         emit({ vertices[child[0]], vertices[child[1]], vertices[child[2]], vertices[child[3]] });
       }
       if (origins)

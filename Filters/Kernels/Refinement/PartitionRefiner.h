@@ -33,7 +33,20 @@ struct RefinementContext
   // Pieces of one mesh refined by separate processes see a shared face with their own ids but
   // with bit-identical coordinates, so only this order cuts it alike on both sides.
   bool orderCornersByCoordinates = false;
+  // When positive: the mean ratio below which the improvement after this pass works. Refinement
+  // then lists the tets that may be below it (PartitionRefinement::tetsToScreen).
+  double improvementTarget = 0;
 };
+
+// Every child of a tet split into eight across its shortest octahedron diagonal has a mean ratio
+// (TetQuality.h) of at least this fraction of its parent's. All eight children have a volume of
+// V/8, so a child's ratio to its parent's mean ratio is S / (4 S_child) for the sums of squared
+// edge lengths S and S_child. The corner children are the parent halved: ratio 1. An inner child
+// has the diagonal d between the midpoints of opposite edges a and b, d^2 = (S - 2P) / 4 with
+// P = |a|^2 + |b|^2, and five edges that halve parent edges other than a or b, at most S / 4 in
+// all; so its ratio is at least S / (2S - 2P). The shortest diagonal is the pair with the largest
+// P, and the three pairs' P sum to S, so P >= S / 3 and the ratio is at least 3/4.
+constexpr double FullSplitChildQuality = 0.75;
 
 using EdgeSet = std::unordered_set<EdgeKey, EdgeKeyHash>;
 
@@ -64,6 +77,10 @@ struct PartitionRefinement
   std::vector<PointId> movedPoints; // vertices quality improvement moved
   std::int64_t healedSplits = 0;    // splits taken from neighbours' outboxes
   std::int64_t createdSplits = 0;   // splits this partition made itself
+  // With RefinementContext::improvementTarget: the indices (ascending) of the refined partition's
+  // tets that may be below it. The others are children of full splits whose parent's mean ratio
+  // was at least the target / FullSplitChildQuality: none of them can be.
+  std::vector<std::size_t> tetsToScreen;
 };
 
 // How many tets refinePartition() will make of `partition` (without healing, which never adds
