@@ -30,6 +30,26 @@ inline double meanRatio(const double* p0, const double* p1, const double* p2, co
   return 12.0 * std::cbrt(9.0 * volume * volume) / sumSquared;
 }
 
+// meanRatio(...) cubed, 15552 V^2 / S^3 with the sign of V (0 or -1 as meanRatio gives them),
+// without the cube root: it orders tets as the mean ratio does, and comparing tets is what the
+// improvement's inner loops do.
+inline double cubedMeanRatio(const double* p0, const double* p1, const double* p2, const double* p3)
+{
+  const double volume = signedVolume6(p0, p1, p2, p3) / 6.0;
+  const double sumSquared = squaredDistance(p0, p1) + squaredDistance(p0, p2) +
+    squaredDistance(p0, p3) + squaredDistance(p1, p2) + squaredDistance(p1, p3) +
+    squaredDistance(p2, p3);
+  if (!(sumSquared > 0))
+  {
+    return -1;
+  }
+  if (volume <= 0)
+  {
+    return volume < 0 ? -1 : 0;
+  }
+  return 1728.0 * 9.0 * volume * volume / (sumSquared * sumSquared * sumSquared);
+}
+
 // meanRatio(...) < target for a target in (0, 1], without the cube root: for a positive volume
 // the ratio is below the target exactly when 12^3 (9 V^2) < (target S)^3. Screening every tet
 // of a partition for poor ones is the improver's most frequent question.

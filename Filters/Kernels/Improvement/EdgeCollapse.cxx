@@ -234,7 +234,7 @@ bool Improver::collapseVertex(int a)
     worstBefore = std::min(worstBefore, this->Qualities[t]);
     replaced.push_back(this->Tets[t]);
   }
-  const double floor = std::min(this->Parameters.collapseQualityFloor, worstBefore);
+  const double floor = std::min(this->CollapseFloorCubed, worstBefore);
   const double volumeBefore = this->totalVolume(replaced);
   const double largestBefore = this->largestVolume(ball);
 

@@ -272,23 +272,34 @@ void Improver::killTet(int t)
   }
 }
 
-std::vector<int> Improver::aliveTetsWith(const std::vector<int>& vertices) const
+void Improver::tetsAroundEdge(int a, int b, std::vector<int>& found) const
 {
-  std::vector<int> found;
-  for (int t : this->Incident[vertices[0]])
+  found.clear();
+  for (int t : this->Incident[a]) // alive tets only: killTet removes the others
   {
     const Corners& c = this->Tets[t];
-    bool all = true;
-    for (std::size_t i = 1; i < vertices.size() && all; ++i)
-    {
-      all = std::find(c.begin(), c.end(), vertices[i]) != c.end();
-    }
-    if (all && this->Alive[t])
+    if (c[0] == b || c[1] == b || c[2] == b || c[3] == b)
     {
       found.push_back(t);
     }
   }
-  return found;
+}
+
+int Improver::neighbourAcross(int t, const std::array<int, 3>& face) const
+{
+  for (int u : this->Incident[face[0]])
+  {
+    const Corners& c = this->Tets[u];
+    const auto holds = [&c](int v)
+    {
+      return c[0] == v || c[1] == v || c[2] == v || c[3] == v;
+    };
+    if (u != t && holds(face[1]) && holds(face[2]))
+    {
+      return u;
+    }
+  }
+  return -1;
 }
 
 // The replaced tet that contains the new tet's centroid: its input cell is the new tet's parent.
@@ -357,6 +368,9 @@ void Improver::writeBack(
 {
   PartitionMesh improved;
   const bool hasRegions = !this->Partition.regions.empty();
+  improved.tets.reserve(this->Tets.size());
+  improved.parentCells.reserve(this->Tets.size());
+  improved.regions.reserve(hasRegions ? this->Tets.size() : 0);
   for (std::size_t t = 0; t < this->Tets.size(); ++t)
   {
     if (!this->Alive[t])

@@ -12,6 +12,7 @@
 #include "Improvement/QualityImprover.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -28,10 +29,11 @@ constexpr int MaximumRing = 7;
 template <typename Value>
 using RingTable = std::array<std::array<Value, MaximumRing>, MaximumRing>;
 
-// A change must beat the worst tet it replaces by more than rounding.
-inline bool improves(double after, double before)
+// A change must beat the worst tet it replaces by more than rounding; both are cubed mean ratios
+// (the Improver's quality), the margin is on the mean ratio.
+inline bool improves(double afterCubed, double beforeCubed)
 {
-  return after > before + 1e-12;
+  return std::cbrt(afterCubed) > std::cbrt(beforeCubed) + 1e-12;
 }
 
 class Improver
@@ -47,9 +49,11 @@ public:
 
 private:
   const double* at(int v) const { return this->Position[v]; }
+  // The cubed mean ratio (cubedMeanRatio): every quality the improver holds or compares is one,
+  // and the targets are cubed to match (run()), which keeps cube roots out of its loops.
   double quality(const Corners& t) const
   {
-    return meanRatio(this->at(t[0]), this->at(t[1]), this->at(t[2]), this->at(t[3]));
+    return cubedMeanRatio(this->at(t[0]), this->at(t[1]), this->at(t[2]), this->at(t[3]));
   }
   double orientation(int a, int b, int c, int d) const
   {
@@ -58,7 +62,9 @@ private:
   int localVertex(PointId id);
   void addTet(const Corners& corners, int region, CellId parent);
   void killTet(int t);
-  std::vector<int> aliveTetsWith(const std::vector<int>& vertices) const;
+  // The tets around edge (a, b), into `found`; the tet other than t on face `face` of t, or -1.
+  void tetsAroundEdge(int a, int b, std::vector<int>& found) const;
+  int neighbourAcross(int t, const std::array<int, 3>& face) const;
   CellId parentOf(const Corners& corners, const std::vector<int>& replaced) const;
 
   bool removeEdge(int a, int b);
@@ -103,7 +109,7 @@ private:
   std::vector<Corners> Tets;
   std::vector<int> Regions;
   std::vector<CellId> Parents;
-  std::vector<double> Qualities; // mean ratio of each tet, kept current
+  std::vector<double> Qualities; // cubed mean ratio of each tet, kept current
   std::vector<char> Alive;
   std::vector<std::vector<int>> Incident; // alive tets at each vertex (killTet removes)
   enum Fixity : char
@@ -122,6 +128,11 @@ private:
   std::vector<std::uint64_t> LastChange;       // clock of the last change at each vertex
   std::vector<std::uint64_t> FailedCollapseAt; // clock when its collapse last failed; 0: never
   ImprovementParameters Parameters;
+  double TargetCubed = 0;        // Parameters.targetQuality cubed
+  double CollapseFloorCubed = 0; // Parameters.collapseQualityFloor cubed
+  // Scratch of removeEdge (the tets around the edge, its ring), kept for their memory: it runs for
+  // every edge of every poor tet.
+  std::vector<int> AroundEdge, Ring;
   // Scratch of collapseVertex and linkConditionHolds, kept for their memory.
   std::vector<std::pair<double, int>> CollapseCandidates;
   std::vector<int> LinkRing;

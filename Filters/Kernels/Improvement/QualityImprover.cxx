@@ -10,7 +10,6 @@
 #include <cmath>
 #include <limits>
 #include <new>
-#include <unordered_set>
 
 namespace cgmesh
 {
@@ -166,7 +165,8 @@ std::vector<Corners> Improver::ringTets(
 
 bool Improver::removeEdge(int a, int b)
 {
-  const std::vector<int> around = this->aliveTetsWith({ a, b });
+  std::vector<int>& around = this->AroundEdge;
+  this->tetsAroundEdge(a, b, around);
   if (around.size() < 3 || around.size() > static_cast<std::size_t>(MaximumRing))
   {
     return false;
@@ -181,11 +181,11 @@ bool Improver::removeEdge(int a, int b)
     }
     before = std::min(before, this->Qualities[t]);
   }
-  if (before >= this->Parameters.targetQuality)
+  if (before >= this->TargetCubed)
   {
     return false;
   }
-  std::vector<int> ring;
+  std::vector<int>& ring = this->Ring;
   if (!this->orderedRing(a, b, around, ring))
   {
     return false;
@@ -236,23 +236,19 @@ bool Improver::removeEdge(int a, int b)
 bool Improver::swapFace(int t, int skip)
 {
   const Corners first = this->Tets[t];
-  if (this->Qualities[t] >= this->Parameters.targetQuality)
+  if (this->Qualities[t] >= this->TargetCubed)
   {
     return false; // bad tets drive the swaps
   }
-  std::vector<int> face;
-  for (int i = 0; i < 4; ++i)
+  std::array<int, 3> face;
+  for (int i = 0, k = 0; i < 4; ++i)
   {
     if (i != skip)
     {
-      face.push_back(first[i]);
+      face[k++] = first[i];
     }
   }
-  int neighbour = -1;
-  for (int u : this->aliveTetsWith(face))
-  {
-    neighbour = u != t ? u : neighbour;
-  }
+  const int neighbour = this->neighbourAcross(t, face);
   if (neighbour < 0 || this->Regions[neighbour] != this->Regions[t])
   {
     return false; // a boundary face or a material interface
@@ -320,7 +316,7 @@ bool Improver::smoothVertex(int v)
   {
     before = std::min(before, this->Qualities[t]);
   }
-  if (before >= this->Parameters.targetQuality)
+  if (before >= this->TargetCubed)
   {
     return false; // only poor tets are worth a move: most vertices stop here
   }
@@ -384,6 +380,8 @@ bool Improver::smoothVertex(int v)
 void Improver::run(const ImprovementParameters& parameters, ImprovementStatistics& statistics)
 {
   this->Parameters = parameters;
+  this->TargetCubed = std::pow(parameters.targetQuality, 3);
+  this->CollapseFloorCubed = std::pow(parameters.collapseQualityFloor, 3);
   std::int64_t changesBeforePass = 0;
   const auto changes = [&statistics]
   {
@@ -407,10 +405,10 @@ void Improver::run(const ImprovementParameters& parameters, ImprovementStatistic
       continue;
     }
     const int tetsAtStart = static_cast<int>(this->Tets.size());
-    std::unordered_set<std::uint64_t> triedEdges;
+    PointIdSet triedEdges; // keys: both local ends packed into 64 bits
     for (int t = 0; t < tetsAtStart; ++t)
     {
-      if (!this->Alive[t] || this->Qualities[t] >= parameters.targetQuality)
+      if (!this->Alive[t] || this->Qualities[t] >= this->TargetCubed)
       {
         continue;
       }
@@ -418,9 +416,8 @@ void Improver::run(const ImprovementParameters& parameters, ImprovementStatistic
       {
         const int a = this->Tets[t][TetEdgeCorners[e][0]];
         const int b = this->Tets[t][TetEdgeCorners[e][1]];
-        const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
-          static_cast<std::uint32_t>(std::max(a, b));
-        if (triedEdges.insert(key).second)
+        const PointId key = (static_cast<PointId>(std::min(a, b)) << 32) | std::max(a, b);
+        if (triedEdges.emplace(key, 0))
         {
           statistics.edgeRemovals += this->removeEdge(a, b);
         }
@@ -556,13 +553,25 @@ PartitionMesh extractNeighbourhood(PartitionMesh& partition, const PointIdSet& v
   {
     return filter.mayContain(p) && vertices.contains(p);
   };
-  PartitionMesh chosen;
-  std::size_t kept = 0;
-  const bool hasRegions = !partition.regions.empty();
+  // Marked first and counted, so that the chosen tets' arrays are allocated once.
+  std::vector<char> isChosen(partition.tets.size());
+  std::size_t chosenCount = 0;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
-    if (std::any_of(tet.begin(), tet.end(), isVertexOfWork))
+    isChosen[t] = std::any_of(tet.begin(), tet.end(), isVertexOfWork);
+    chosenCount += isChosen[t];
+  }
+  PartitionMesh chosen;
+  const bool hasRegions = !partition.regions.empty();
+  chosen.tets.reserve(chosenCount);
+  chosen.parentCells.reserve(chosenCount);
+  chosen.regions.reserve(hasRegions ? chosenCount : 0);
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    const Tet& tet = partition.tets[t];
+    if (isChosen[t])
     {
       appendTetOf(partition, t, chosen);
       continue;
