@@ -79,6 +79,15 @@ public:
   // Inserts (key, value) unless the key is there; returns whether it inserted.
   bool emplace(const Key& key, const Value& value)
   {
+    bool inserted = false;
+    this->findOrEmplace(key, value, inserted);
+    return inserted;
+  }
+
+  // The key's value, after inserting (key, value) if the key was not there (`inserted` says
+  // which): one probe where find() after a failed emplace() takes two.
+  Value& findOrEmplace(const Key& key, const Value& value, bool& inserted)
+  {
     if (2 * (this->Count + 1) > this->Slots.size())
     {
       this->rehash(this->Slots.empty() ? 16 : 2 * this->Slots.size());
@@ -89,13 +98,15 @@ public:
       Slot& slot = this->Slots[i];
       if (slot.first == key)
       {
-        return false;
+        inserted = false;
+        return slot.second;
       }
       if (slot.first == EmptyKey::value())
       {
         slot = Slot(key, value);
         ++this->Count;
-        return true;
+        inserted = true;
+        return slot.second;
       }
     }
   }

@@ -232,9 +232,11 @@ bool Improver::mayBeFree(int v)
 int Improver::localVertex(PointId id)
 {
   const int next = static_cast<int>(this->IdOf.size());
-  if (!this->LocalOf.emplace(id, next))
+  bool inserted = false;
+  const int local = this->LocalOf.findOrEmplace(id, next, inserted);
+  if (!inserted)
   {
-    return *this->LocalOf.find(id);
+    return local;
   }
   this->IdOf.push_back(id);
   this->Position.push_back(this->Points.at(id));

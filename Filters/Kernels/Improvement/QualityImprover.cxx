@@ -553,25 +553,19 @@ PartitionMesh extractNeighbourhood(PartitionMesh& partition, const PointIdSet& v
   {
     return filter.mayContain(p) && vertices.contains(p);
   };
-  // Marked first and counted, so that the chosen tets' arrays are allocated once.
-  std::vector<char> isChosen(partition.tets.size());
-  std::size_t chosenCount = 0;
-  for (std::size_t t = 0; t < partition.tets.size(); ++t)
-  {
-    const Tet& tet = partition.tets[t];
-    isChosen[t] = std::any_of(tet.begin(), tet.end(), isVertexOfWork);
-    chosenCount += isChosen[t];
-  }
   PartitionMesh chosen;
   const bool hasRegions = !partition.regions.empty();
-  chosen.tets.reserve(chosenCount);
-  chosen.parentCells.reserve(chosenCount);
-  chosen.regions.reserve(hasRegions ? chosenCount : 0);
+  // Room for the usual neighbourhood (6 to 11 tets per vertex of work on the FinFET, before and
+  // after refinement), so that the chosen tets' arrays seldom grow.
+  const std::size_t expected = std::min(partition.tets.size(), 12 * vertices.size());
+  chosen.tets.reserve(expected);
+  chosen.parentCells.reserve(expected);
+  chosen.regions.reserve(hasRegions ? expected : 0);
   std::size_t kept = 0;
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
-    if (isChosen[t])
+    if (std::any_of(tet.begin(), tet.end(), isVertexOfWork))
     {
       appendTetOf(partition, t, chosen);
       continue;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <new>
 
 namespace cgmesh
@@ -250,11 +251,12 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
     session.reserve(partition.tets.size());
     const bool listsTetsToScreen = context.improvementTarget > 0;
     refinement.tetsToScreen.clear();
-    // The parents whose children all clear the target; a hair above the bound, so that rounding
-    // in the midpoints cannot put a child just under it.
-    const double clearingParentQuality =
-      context.improvementTarget / FullSplitChildQuality * (1 + 1e-9);
-    const bool parentsMayClear = listsTetsToScreen && clearingParentQuality <= 1;
+    // Cubed mean ratios a fully split parent must reach for its corner children (the parent
+    // halved) and for all its children to clear the target; a hair above the bounds, so that
+    // rounding in the midpoints cannot put a child just under it.
+    const double cornersClearAt = std::pow(context.improvementTarget * (1 + 1e-9), 3);
+    const double allClearAt =
+      std::pow(context.improvementTarget / FullSplitChildQuality * (1 + 1e-9), 3);
     const bool hasRegions = !partition.regions.empty();
     PartitionMesh refined;
     refined.tets.reserve(partition.tets.size() * 2);
@@ -306,12 +308,14 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
         : context.templates->partialSplit(splitMask,
             cornerRanks(
               tet, context, [&session](PointId id) { return session.coordinatesOf(id); }));
-      const bool childrenClear = parentsMayClear && splitMask == 63 &&
-        !meanRatioBelow(session.coordinatesOf(tet[0]), session.coordinatesOf(tet[1]),
-          session.coordinatesOf(tet[2]), session.coordinatesOf(tet[3]), clearingParentQuality);
+      const double parentQuality = listsTetsToScreen && splitMask == 63
+        ? cubedMeanRatio(session.coordinatesOf(tet[0]), session.coordinatesOf(tet[1]),
+            session.coordinatesOf(tet[2]), session.coordinatesOf(tet[3]))
+        : 0;
       for (const LocalTet& child : children)
       {
-        if (listsTetsToScreen && !childrenClear)
+        const bool isCorner = child[0] < 4 || child[1] < 4 || child[2] < 4 || child[3] < 4;
+        if (listsTetsToScreen && parentQuality < (isCorner ? cornersClearAt : allClearAt))
         {
           refinement.tetsToScreen.push_back(refined.tets.size());
         }

@@ -78,8 +78,9 @@ struct PartitionRefinement
   std::int64_t healedSplits = 0;    // splits taken from neighbours' outboxes
   std::int64_t createdSplits = 0;   // splits this partition made itself
   // With RefinementContext::improvementTarget: the indices (ascending) of the refined partition's
-  // tets that may be below it. The others are children of full splits whose parent's mean ratio
-  // was at least the target / FullSplitChildQuality: none of them can be.
+  // tets that may be below it. The others are children of full splits that cannot be: corner
+  // children (their parent halved) of a parent at the target, and every child of a parent at the
+  // target / FullSplitChildQuality.
   std::vector<std::size_t> tetsToScreen;
 };
 
