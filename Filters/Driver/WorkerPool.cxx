@@ -1,6 +1,7 @@
 #include "WorkerPool.h"
 
 #include "Partitioning/MeshPartitioner.h"
+#include "Refinement/TetGenRefiner.h"
 #include "SocketTransfer.h"
 #include "WorkerMessages.h"
 
@@ -198,18 +199,7 @@ double tetgenTimeLimitSeconds(const tetgenio& in, const std::string& switches)
   {
     return 30.0 + 0.002 * tets;
   }
-  double volume = 0;
-  for (int t = 0; t < in.numberoftetrahedra; ++t)
-  {
-    const int* corners = in.tetrahedronlist + static_cast<std::size_t>(t) * in.numberofcorners;
-    const double* p[4];
-    for (int k = 0; k < 4; ++k)
-    {
-      p[k] = in.pointlist + 3 * static_cast<std::size_t>(corners[k] - in.firstnumber);
-    }
-    volume += std::abs(signedVolume6(p[0], p[1], p[2], p[3])) / 6.0;
-  }
-  return std::max(10.0, 2.5e-4 * (tets + 4.0 * volume / volumeBound));
+  return std::max(10.0, 2.5e-4 * forecastRefinedTets(in, volumeBound));
 }
 
 WorkerPool::WorkerPool(int workers)

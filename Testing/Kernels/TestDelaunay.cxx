@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <stdlib.h>
@@ -319,6 +320,10 @@ void test_tampered_tetgen_output_is_refused()
   CHECK(!untouched.fellBack);
   CHECK(!untouched.retried && !untouched.withoutQualityBound);
   CHECK(untouched.tetgenPoints > 0);
+  // The call refining given tets to the volume bound caps the points it may add.
+  CHECK(calls.size() == 1 && calls[0].find('S') != std::string::npos);
+  const long steinerCap = calls.empty() ? 0 : std::atol(calls[0].c_str() + calls[0].find('S') + 1);
+  CHECK(steinerCap >= SteinerCapFloor && untouched.tetgenPoints < steinerCap / 2);
 
   // Tet 0 names a tet that does not name it back.
   const DelaunayOutcome oneSided = refineWith(
@@ -382,6 +387,27 @@ void test_tampered_tetgen_output_is_refused()
   CHECK_EQUAL(calls.size(), std::size_t(4));
   CHECK(calls.size() == 4 && calls[3].find('q') == std::string::npos &&
     calls[3].find('a') != std::string::npos);
+
+  // A call that adds more than half its cap in points (TetGen inserting one circumcentre again
+  // and again) ends the attempts at once.
+  const DelaunayOutcome runaway = refineWith(
+    [&](const std::string&, tetgenio& out)
+    {
+      const int added = static_cast<int>(steinerCap / 2) + 1;
+      REAL* points = new REAL[3 * (out.numberofpoints + added)];
+      std::copy(out.pointlist, out.pointlist + 3 * out.numberofpoints, points);
+      for (int k = 0; k < added; ++k)
+      {
+        std::copy(out.pointlist, out.pointlist + 3, points + 3 * (out.numberofpoints + k));
+      }
+      delete[] out.pointlist;
+      out.pointlist = points;
+      out.numberofpoints += added;
+      return std::string();
+    });
+  CHECK(runaway.fellBack);
+  CHECK(runaway.reason.rfind(TetGenRunawayReason, 0) == 0);
+  CHECK_EQUAL(calls.size(), std::size_t(1));
 
   // A call stopped at the time limit ends the attempts at once.
   const DelaunayOutcome timedOut = refineWith([](const std::string&, tetgenio&)

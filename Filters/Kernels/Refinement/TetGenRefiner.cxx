@@ -83,8 +83,8 @@ struct TetGenAttempt
 };
 
 // Runs the attempts in turn until one gives a valid mesh, which the partition adopts; returns
-// the last failure, empty on success. A call stopped at the time limit while refining (switch r)
-// ends the attempts.
+// the last failure, empty on success. A call stopped at the time limit or at its cap on added
+// points while refining (switch r) ends the attempts.
 std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMesh& partition,
   const std::vector<Face>& keptFaces, const RefinementContext& context,
   const DelaunayParameters& parameters, PointId firstDroppablePoint, const TetGenRunner& runTetGen,
@@ -98,8 +98,31 @@ std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMes
     session.prepareInput(in, keptFaces, attempt.order, attempt.input, firstDroppablePoint);
     const bool remesh = attempt.input != TetGenInput::Tets;
     const bool sizeField = context.sizes != nullptr && !parameters.shapesOnly;
-    failure =
-      runTetGen(in, tetgenSwitches(parameters, attempt.qualityBound, sizeField, remesh), out);
+    std::string switches = tetgenSwitches(parameters, attempt.qualityBound, sizeField, remesh);
+    // Refining given tets that are not Delaunay (a later pass gets TetGen's tets cut by the
+    // interface rounds' templates), TetGen can insert the circumcentre of a tet over the bound
+    // where the cavity it opens leaves that tet in place: the same centre then goes in again and
+    // again, each time a rounding apart (on a second pass over the Big cube, 104,000 points in 5 s
+    // at one spot, until the time limit). A cap far above the forecast ends such a call at once.
+    const bool capped = !remesh && !sizeField && parameters.maximumVolume > 0 &&
+      !parameters.shapesOnly && in.numberoftetrahedra > 0;
+    const double cap = capped ? std::min(1e9,
+                                  std::max<double>(SteinerCapFloor,
+                                    2.0 * forecastRefinedTets(in, parameters.maximumVolume)))
+                              : 0;
+    if (capped)
+    {
+      switches += "S" + std::to_string(static_cast<long long>(cap));
+    }
+    failure = runTetGen(in, switches, out);
+    // A normal call adds about a fifth of its output tets in points; the cap stops TetGen at or
+    // just under it.
+    if (failure.empty() && capped && out.numberofpoints - in.numberofpoints > cap / 2)
+    {
+      failure = std::string(TetGenRunawayReason) + " (" +
+        std::to_string(out.numberofpoints - in.numberofpoints) +
+        ", more than the forecast output tets): it was repeating one insertion";
+    }
     if (failure.empty())
     {
       failure = session.validate(in, out, remesh && parameters.keptFacesMaySplit);
@@ -113,9 +136,10 @@ std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMes
       return failure;
     }
     outcome.retried = true;
-    if (!remesh && failure.rfind(TetGenTimeLimitReason, 0) == 0)
+    if (!remesh &&
+      (failure.rfind(TetGenTimeLimitReason, 0) == 0 || failure.rfind(TetGenRunawayReason, 0) == 0))
     {
-      break;
+      break; // the same in every order and without q: the partition falls back
     }
   }
   return failure;
@@ -181,6 +205,22 @@ void setTriangleFacets(tetgenio& io, const int* corners, int count)
     facet.polygonlist[0].vertexlist = new int[3];
     std::copy_n(corners + 3 * f, 3, facet.polygonlist[0].vertexlist);
   }
+}
+
+double forecastRefinedTets(const tetgenio& in, double maximumVolume)
+{
+  double volume = 0;
+  for (int t = 0; t < in.numberoftetrahedra; ++t)
+  {
+    const int* corners = in.tetrahedronlist + static_cast<std::size_t>(t) * in.numberofcorners;
+    const double* p[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      p[k] = in.pointlist + 3 * static_cast<std::size_t>(corners[k] - in.firstnumber);
+    }
+    volume += std::abs(signedVolume6(p[0], p[1], p[2], p[3])) / 6.0;
+  }
+  return in.numberoftetrahedra + 4.0 * volume / maximumVolume;
 }
 
 double forecastDelaunayTets(double volume, double maximumVolume)

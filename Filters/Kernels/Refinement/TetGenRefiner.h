@@ -63,6 +63,11 @@ double forecastDelaunayTets(double volume, double maximumVolume);
 double forecastDelaunayTetsForSizes(
   const TetList& tets, const std::vector<double>& coordinates, const std::vector<double>& sizes);
 
+// TetGen's output tets forecast for refining the tets given in `in` to `maximumVolume`: the tets
+// given plus four per bound of their volume (generous: its tets average about a third of the
+// bound). Sizes the time limit of a call and the points it may add.
+double forecastRefinedTets(const tetgenio& in, double maximumVolume);
+
 // Gives `io` `count` facets of one triangle each, their corners 3 per facet in `corners`: the PLC
 // of a partition meshed anew (switch p).
 void setTriangleFacets(tetgenio& io, const int* corners, int count);
@@ -72,6 +77,11 @@ void setTriangleFacets(tetgenio& io, const int* corners, int count);
 // call stopped for taking too long returns a reason that starts with TetGenTimeLimitReason: no
 // further attempt is made on that partition.
 constexpr const char* TetGenTimeLimitReason = "TetGen took longer than";
+// A call that refines given tets to a volume bound may add at most twice its forecast output tets
+// (forecastRefinedTets) in points, at least SteinerCapFloor; one that adds more than half the cap
+// fails with a reason starting with TetGenRunawayReason, and no further attempt is made either.
+constexpr int SteinerCapFloor = 1000;
+constexpr const char* TetGenRunawayReason = "TetGen kept inserting points";
 using TetGenRunner =
   std::function<std::string(const tetgenio& in, const std::string& switches, tetgenio& out)>;
 
