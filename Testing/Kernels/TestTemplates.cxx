@@ -335,11 +335,34 @@ void test_full_split_children_keep_three_quarters()
   }
 }
 
+// mostChildren() sizes refinement's output: it must bound every corner order's template and be
+// reached by one of them.
+void test_most_children_bounds_every_template()
+{
+  const TemplateTable table;
+  CHECK(table.status().ok());
+  CHECK_EQUAL(table.mostChildren(0), 1);
+  CHECK_EQUAL(table.mostChildren(63), 8);
+  for (int mask = 1; mask < 63; ++mask)
+  {
+    std::array<int, 4> ranks = { 0, 1, 2, 3 };
+    std::size_t most = 0;
+    do
+    {
+      const std::size_t children = table.partialSplit(mask, ranks).size();
+      CHECK(children <= static_cast<std::size_t>(table.mostChildren(mask)));
+      most = std::max(most, children);
+    } while (std::next_permutation(ranks.begin(), ranks.end()));
+    CHECK_EQUAL(most, static_cast<std::size_t>(table.mostChildren(mask)));
+  }
+}
+
 } // namespace
 
 int main()
 {
   test_every_template_case();
+  test_most_children_bounds_every_template();
   test_shared_face_agreement();
   test_full_split_children_keep_three_quarters();
   return cgmesh_test::finish("TestTemplates");

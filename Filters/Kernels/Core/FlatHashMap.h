@@ -63,6 +63,13 @@ public:
 
   bool contains(const Key& key) const { return this->find(key) != nullptr; }
 
+  // The slot a look-up of the key reads first (null when the map has no slots), for the caller
+  // to prefetch: a large map's look-ups are cache misses one after another otherwise.
+  const void* firstSlotOf(const Key& key) const
+  {
+    return this->Slots.empty() ? nullptr : &this->Slots[Hash()(key) & (this->Slots.size() - 1)];
+  }
+
   // Calls visit(key, value) for every entry, in slot order.
   template <typename Visit>
   void forEach(Visit&& visit) const

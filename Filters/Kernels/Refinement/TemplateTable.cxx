@@ -450,6 +450,15 @@ TemplateTable::TemplateTable(const ParallelFor& parallelFor)
     }
   }
 
+  this->MostChildren[0] = 1;
+  for (int mask = 1; mask < 63; ++mask)
+  {
+    for (int code = 0; code < 256; ++code)
+    {
+      this->MostChildren[mask] = std::max(
+        this->MostChildren[mask], static_cast<int>(this->Partial[mask * 256 + code].size()));
+    }
+  }
   for (int diagonal = 0; diagonal < 3; ++diagonal)
   {
     this->Full[diagonal] = buildFullSplit(diagonal);
@@ -459,6 +468,8 @@ TemplateTable::TemplateTable(const ParallelFor& parallelFor)
         ErrorKind::Internal, "invalid full-split template " + std::to_string(diagonal));
       return;
     }
+    this->MostChildren[63] =
+      std::max(this->MostChildren[63], static_cast<int>(this->Full[diagonal].size()));
   }
 }
 

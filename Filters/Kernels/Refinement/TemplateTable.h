@@ -46,10 +46,15 @@ public:
   // octahedron along the midpoints of edges (0,5), (1,4) or (2,3) respectively.
   const std::vector<LocalTet>& fullSplit(int diagonal) const;
 
+  // The most children the split pattern gives under any order of the corners (1 for none, 8
+  // for all six edges): what refining a tet with that pattern can add at most.
+  int mostChildren(int splitMask) const { return this->MostChildren[splitMask]; }
+
   static int rankCode(const std::array<int, 4>& cornerRanks);
 
 private:
   std::vector<std::vector<LocalTet>> Partial; // indexed by splitMask * 256 + rankCode
+  std::array<int, 64> MostChildren{};
   std::array<std::vector<LocalTet>, 3> Full;
   Status Validity = Status::success();
 };
