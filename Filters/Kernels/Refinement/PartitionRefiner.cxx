@@ -55,7 +55,7 @@ public:
     }
     // Only an edge between two interface vertices can be shared, so only such an edge can have
     // been split by a neighbour: the others are not looked up among the posted splits.
-    const bool shareable = this->onInterface(key.low) && this->onInterface(key.high);
+    const bool shareable = this->mayShare(key.low, key.high);
     PointId vertex;
     if (const PointId* healed = shareable ? this->Received.find(key) : nullptr)
     {
@@ -71,7 +71,23 @@ public:
     return vertex;
   }
 
-  void reserve(std::size_t expectedSplits) { this->Created.reserve(expectedSplits); }
+  // Room for the splits this session expects to make, `shared` of them on interfaces.
+  void reserve(std::size_t splits, std::size_t shared)
+  {
+    this->Created.reserve(splits);
+    PartitionRefinement& r = this->Refinement;
+    r.newPointSources.reserve(r.newPointSources.size() + splits);
+    r.newCoordinates.reserve(r.newCoordinates.size() + 3 * splits);
+    if (this->Context.sizes)
+    {
+      r.newSizes.reserve(r.newSizes.size() + splits);
+    }
+    r.outbox.reserve(r.outbox.size() + shared);
+    r.newInterfacePoints.reserve(r.newInterfacePoints.size() + shared);
+  }
+
+  // Whether edge (a, b) may be shared with a neighbour: both ends on an interface.
+  bool mayShare(PointId a, PointId b) const { return this->onInterface(a) && this->onInterface(b); }
 
   // Bit e set when the tet's edge e is long and the filter lets it be split.
   int splitMaskOf(const Tet& tet, const EdgeFilter& filter) const
@@ -98,7 +114,7 @@ public:
     {
       const PointId a = tet[TetEdgeCorners[e][0]];
       const PointId b = tet[TetEdgeCorners[e][1]];
-      if (((splitMask >> e) & 1) && this->onInterface(a) && this->onInterface(b))
+      if (((splitMask >> e) & 1) && this->mayShare(a, b))
       {
         slots[count++] = this->Received.firstSlotOf(EdgeKey::of(a, b));
       }
@@ -281,7 +297,6 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
   try
   {
     SplitSession session(context, received, refinement);
-    session.reserve(partition.tets.size());
     const bool listsTetsToScreen = context.improvementTarget > 0;
     refinement.tetsToScreen.clear();
     // Cubed mean ratios a fully split parent must reach for its corner children (the parent
@@ -297,12 +312,28 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
     // look-ups.
     const std::size_t tetCount = partition.tets.size();
     std::vector<std::uint8_t> splitMasks(tetCount);
-    std::size_t mostTets = 0;
+    std::size_t mostTets = 0, splitEdges = 0, sharedSplitEdges = 0; // counted once per tet
     for (std::size_t t = 0; t < tetCount; ++t)
     {
-      splitMasks[t] = static_cast<std::uint8_t>(session.splitMaskOf(partition.tets[t], filter));
-      mostTets += context.templates->mostChildren(splitMasks[t]);
+      const Tet& tet = partition.tets[t];
+      const int splitMask = session.splitMaskOf(tet, filter);
+      splitMasks[t] = static_cast<std::uint8_t>(splitMask);
+      mostTets += context.templates->mostChildren(splitMask);
+      for (int e = 0; e < 6; ++e)
+      {
+        if ((splitMask >> e) & 1)
+        {
+          ++splitEdges;
+          sharedSplitEdges +=
+            session.mayShare(tet[TetEdgeCorners[e][0]], tet[TetEdgeCorners[e][1]]);
+        }
+      }
     }
+    // A tet mesh has about 7/6 edges per tet, a small partition more (its surface's edges are
+    // shared by fewer tets): twice the tets, plus a little, bounds the new points of all but the
+    // smallest partitions, and the edges counted per tet bound those.
+    const std::size_t expectedSplits = std::min(splitEdges, 2 * tetCount + 64);
+    session.reserve(expectedSplits, std::min(sharedSplitEdges, expectedSplits));
     PartitionMesh refined;
     refined.tets.reserve(mostTets);
     refined.parentCells.reserve(mostTets);
