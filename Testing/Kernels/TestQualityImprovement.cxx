@@ -16,7 +16,9 @@
 #include "Validation/MeshValidation.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 
 using namespace cgmesh;
 
@@ -228,6 +230,91 @@ void test_tets_left_are_those_still_needing_work()
     CHECK(statistics.edgeRemovals + statistics.faceSwaps + statistics.vertexMoves > 0);
     CHECK(!coarsen || statistics.edgeCollapses > 0);
   }
+}
+
+// With settledVertices, an improver clears the flags of the vertices it could not collapse while
+// they were free (ImprovementParameters::settledVertices): each such vertex is still in the mesh,
+// lies on no boundary or material interface, and every vertex there keeps its flag. Tried on the
+// refined device taken whole as one partition, every vertex flagged, with sizes that make part
+// of the edges short.
+void test_settled_vertices_are_free_ones_that_stayed()
+{
+  TetMesh input;
+  CHECK(generateFinFet(15000, input).ok());
+  AdaptationOptions options;
+  options.numberOfPartitions = 8;
+  options.edgeLengthFactor = 0.6;
+  options.improveQuality = false;
+  AdaptationResult refined;
+  CHECK(adaptMesh(input, options, refined).ok());
+  PartitionMesh partition;
+  partition.tets = refined.mesh.tets;
+  partition.regions = refined.mesh.regions;
+  partition.parentCells.assign(partition.tets.size(), 0);
+  const std::size_t pointCount = static_cast<std::size_t>(refined.mesh.numberOfPoints());
+  std::vector<double> coordinates = refined.mesh.coordinates, provisional, provisionalSizes;
+  std::vector<double> sizes(pointCount, 0.8 * refined.summary.plan.edgeLengthThreshold);
+  PartitionPoints points{ &coordinates, &provisional, &sizes, &provisionalSizes };
+  std::vector<char> flags(pointCount, 1);
+  ImprovementParameters parameters;
+  parameters.coarsen = true;
+  parameters.collapsibleVertices = &flags;
+  parameters.settledVertices = &flags;
+  ImprovementStatistics statistics;
+  std::vector<PointId> moved;
+  CHECK(improvePartition(partition, points, parameters, statistics, moved).ok());
+  CHECK(statistics.edgeCollapses > 0);
+
+  // Vertices in use, and those on a face with one tet or with tets of two regions.
+  std::vector<char> used(pointCount, 0), constrained(pointCount, 0);
+  std::map<std::array<PointId, 3>, std::vector<int>> regionsAtFace;
+  for (std::size_t t = 0; t < partition.tets.size(); ++t)
+  {
+    const Tet& tet = partition.tets[t];
+    for (int skip = 0; skip < 4; ++skip)
+    {
+      std::array<PointId, 3> face;
+      int n = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        used[tet[k]] = 1;
+        if (k != skip)
+        {
+          face[n++] = tet[k];
+        }
+      }
+      std::sort(face.begin(), face.end());
+      regionsAtFace[face].push_back(partition.regions[t]);
+    }
+  }
+  for (const auto& [face, regions] : regionsAtFace)
+  {
+    if (regions.size() == 1 || regions[0] != regions[1])
+    {
+      for (PointId p : face)
+      {
+        constrained[p] = 1;
+      }
+    }
+  }
+  std::size_t settled = 0, constrainedFlagged = 0, constrainedCount = 0;
+  for (std::size_t p = 0; p < pointCount; ++p)
+  {
+    if (flags[p] == 0)
+    {
+      ++settled;
+      CHECK(used[p] && !constrained[p]);
+    }
+    if (used[p] && constrained[p])
+    {
+      ++constrainedCount;
+      constrainedFlagged += flags[p];
+    }
+  }
+  std::cout << settled << " of " << pointCount << " vertices settled after "
+            << statistics.edgeCollapses << " collapses\n";
+  CHECK(settled > 0);
+  CHECK_EQUAL(constrainedFlagged, constrainedCount);
 }
 
 // Refinement's list of the tets that may be under the target (PartitionRefinement::tetsToScreen)
@@ -532,6 +619,7 @@ int main()
   test_edge_removal_three_to_two();
   test_collapse_only_where_flagged();
   test_tets_left_are_those_still_needing_work();
+  test_settled_vertices_are_free_ones_that_stayed();
   test_screening_the_listed_tets_finds_all_work();
   test_device_refinement_with_improvement();
   test_improvement_over_several_passes();

@@ -368,6 +368,16 @@ bool Improver::needsWork(int t) const
 void Improver::writeBack(
   std::vector<PointId>& movedPoints, std::size_t firstIndex, std::vector<std::size_t>* tetsLeft)
 {
+  if (this->Parameters.settledVertices)
+  {
+    for (std::size_t v = 0; v < this->IdOf.size(); ++v)
+    {
+      if (this->Fixedness[v] == Free && this->FailedCollapseAt[v] != 0)
+      {
+        (*this->Parameters.settledVertices)[this->IdOf[v]] = 0;
+      }
+    }
+  }
   PartitionMesh improved;
   const bool hasRegions = !this->Partition.regions.empty();
   improved.tets.reserve(this->Tets.size());

@@ -37,6 +37,12 @@ struct ImprovementParameters
   // interfaces pass the former interface vertices: every other vertex was free in its partition,
   // whose improvement tried its short edges already.
   const std::vector<char>* collapsibleVertices = nullptr;
+  // When set (to the same flags as collapsibleVertices), the improver clears the flag of every
+  // vertex it could not collapse while it was free: that vertex had its chance, as every vertex
+  // inside a partition had, and a later sweep leaves it be. Only free vertices' flags are
+  // written, and a free vertex lies in the tets of one improver alone, so improvers running at
+  // once never share one.
+  std::vector<char>* settledVertices = nullptr;
   // Only tets whose mean ratio is below this are worked on: good tets are left alone, which is
   // where most of the time would go.
   double targetQuality = 0.5;
