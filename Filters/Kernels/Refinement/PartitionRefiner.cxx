@@ -330,8 +330,9 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       }
     }
     // A tet mesh has about 7/6 edges per tet, a small partition more (its surface's edges are
-    // shared by fewer tets): twice the tets, plus a little, bounds the new points of all but the
-    // smallest partitions, and the edges counted per tet bound those.
+    // shared by fewer tets): room for twice the tets plus 64 new points, or for the split edges
+    // counted per tet where those are fewer (they bound the new points). A partition that makes
+    // more grows its tables as before.
     const std::size_t expectedSplits = std::min(splitEdges, 2 * tetCount + 64);
     session.reserve(expectedSplits, std::min(sharedSplitEdges, expectedSplits));
     PartitionMesh refined;
