@@ -108,9 +108,20 @@ bool Improver::linkConditionHolds(int a, int b)
     ring.insert(ring.end(), other, other + 2);
     ringEdges.push_back(edgeOf(other[0], other[1]));
   }
-  const auto inRing = [&ring](int v)
+  // Ring membership by a mark per vertex: looked up for every corner of both balls, a search of
+  // the ring each time was the larger part of this test.
+  if (++this->RingStamp == 0) // wrapped: no old mark may match
   {
-    return std::find(ring.begin(), ring.end(), v) != ring.end();
+    std::fill(this->RingMark.begin(), this->RingMark.end(), 0);
+    this->RingStamp = 1;
+  }
+  for (int v : ring)
+  {
+    this->RingMark[v] = this->RingStamp;
+  }
+  const auto inRing = [this](int v)
+  {
+    return this->RingMark[v] == this->RingStamp;
   };
 
   this->nextLinkStamp();

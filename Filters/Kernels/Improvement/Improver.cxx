@@ -100,6 +100,7 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
   this->LastChange.assign(this->IdOf.size(), 0);
   this->FailedCollapseAt.assign(this->IdOf.size(), 0);
   this->NeighbourMark.assign(this->IdOf.size(), 0);
+  this->RingMark.assign(this->IdOf.size(), 0);
 }
 
 // A vertex stays where it is when a face around it has no second tet (the domain boundary, a

@@ -140,6 +140,8 @@ private:
   // LinkStamp where a vertex neighbours the collapsed end, is a new neighbour of the kept one, or
   // a neighbour mayBeFree() counted; nextLinkStamp() starts a new marking.
   std::vector<unsigned> NeighbourMark;
+  // RingStamp where a vertex is on the ring of the edge linkConditionHolds() looks at.
+  std::vector<unsigned> RingMark;
   struct LinkEdge // a face at the vertex isFixed looks at, by its other two corners
   {
     std::uint64_t key = 0;
@@ -150,6 +152,7 @@ private:
   std::vector<LinkEdge> LinkEdges; // scratch of isFixed
   unsigned LinkEdgeCall = 0;
   unsigned LinkStamp = 0;
+  unsigned RingStamp = 0;
 };
 
 } // namespace improvement
