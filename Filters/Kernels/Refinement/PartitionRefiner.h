@@ -28,7 +28,7 @@ struct RefinementContext
   // With a size field: one size per global point, and edges are split by longerThanSize()
   // instead of the threshold.
   const std::vector<double>* sizes = nullptr;
-  const TemplateTable* templates = nullptr;
+  const TemplateTable* templates = nullptr; // required: refinePartition() sizes its output by it
   // Face diagonals follow the vertices' coordinates (lexicographic x, y, z) instead of their ids.
   // Pieces of one mesh refined by separate processes see a shared face with their own ids but
   // with bit-identical coordinates, so only this order cuts it alike on both sides.
