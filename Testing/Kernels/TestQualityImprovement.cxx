@@ -180,10 +180,9 @@ void test_collapse_only_where_flagged()
   }
 }
 
-// The tets improvePartition() reports left to do are exactly those that still need improvement
-// afterwards, tried on a refined device taken whole as one partition (its boundary and material
-// interfaces frozen, so work is left there), with and without coarsening to a size field.
-void test_tets_left_are_those_still_needing_work()
+// A small device refined once (factor 0.6), without improvement: poor tets and, against sizes
+// under the refinement's threshold, short edges to work on.
+AdaptationResult refinedDevice()
 {
   TetMesh input;
   CHECK(generateFinFet(15000, input).ok());
@@ -193,12 +192,28 @@ void test_tets_left_are_those_still_needing_work()
   options.improveQuality = false;
   AdaptationResult refined;
   CHECK(adaptMesh(input, options, refined).ok());
+  return refined;
+}
+
+// The whole mesh as one partition, so that only its boundary and material interfaces freeze.
+PartitionMesh asOnePartition(const TetMesh& mesh)
+{
+  PartitionMesh partition;
+  partition.tets = mesh.tets;
+  partition.regions = mesh.regions;
+  partition.parentCells.assign(partition.tets.size(), 0);
+  return partition;
+}
+
+// The tets improvePartition() reports left to do are exactly those that still need improvement
+// afterwards, tried on a refined device taken whole as one partition (its boundary and material
+// interfaces frozen, so work is left there), with and without coarsening to a size field.
+void test_tets_left_are_those_still_needing_work()
+{
+  const AdaptationResult refined = refinedDevice();
   for (bool coarsen : { false, true })
   {
-    PartitionMesh partition;
-    partition.tets = refined.mesh.tets;
-    partition.regions = refined.mesh.regions;
-    partition.parentCells.assign(partition.tets.size(), 0);
+    PartitionMesh partition = asOnePartition(refined.mesh);
     std::vector<double> coordinates = refined.mesh.coordinates, provisional, provisionalSizes;
     // Sizes that make part of the edges short.
     std::vector<double> sizes(
@@ -239,18 +254,8 @@ void test_tets_left_are_those_still_needing_work()
 // of the edges short.
 void test_settled_vertices_are_free_ones_that_stayed()
 {
-  TetMesh input;
-  CHECK(generateFinFet(15000, input).ok());
-  AdaptationOptions options;
-  options.numberOfPartitions = 8;
-  options.edgeLengthFactor = 0.6;
-  options.improveQuality = false;
-  AdaptationResult refined;
-  CHECK(adaptMesh(input, options, refined).ok());
-  PartitionMesh partition;
-  partition.tets = refined.mesh.tets;
-  partition.regions = refined.mesh.regions;
-  partition.parentCells.assign(partition.tets.size(), 0);
+  const AdaptationResult refined = refinedDevice();
+  PartitionMesh partition = asOnePartition(refined.mesh);
   const std::size_t pointCount = static_cast<std::size_t>(refined.mesh.numberOfPoints());
   std::vector<double> coordinates = refined.mesh.coordinates, provisional, provisionalSizes;
   std::vector<double> sizes(pointCount, 0.8 * refined.summary.plan.edgeLengthThreshold);

@@ -10,15 +10,27 @@
 namespace cgmesh
 {
 
+// What the mean ratio is made of: the signed volume V and the sum S of squared edge lengths.
+struct MeanRatioTerms
+{
+  double volume;
+  double sumSquared;
+};
+
+inline MeanRatioTerms meanRatioTerms(
+  const double* p0, const double* p1, const double* p2, const double* p3)
+{
+  return { signedVolume6(p0, p1, p2, p3) / 6.0,
+    squaredDistance(p0, p1) + squaredDistance(p0, p2) + squaredDistance(p0, p3) +
+      squaredDistance(p1, p2) + squaredDistance(p1, p3) + squaredDistance(p2, p3) };
+}
+
 // Mean ratio: 12 (3 V)^(2/3) / (sum of squared edge lengths). 1 for the regular tet, tending to 0
 // for degenerate ones, negative for inverted ones. Smooth and cheap, which suits optimisation;
 // it is the measure the quality improvement maximises (the worst tet of each local change).
 inline double meanRatio(const double* p0, const double* p1, const double* p2, const double* p3)
 {
-  const double volume = signedVolume6(p0, p1, p2, p3) / 6.0;
-  const double sumSquared = squaredDistance(p0, p1) + squaredDistance(p0, p2) +
-    squaredDistance(p0, p3) + squaredDistance(p1, p2) + squaredDistance(p1, p3) +
-    squaredDistance(p2, p3);
+  const auto [volume, sumSquared] = meanRatioTerms(p0, p1, p2, p3);
   if (!(sumSquared > 0))
   {
     return -1;
@@ -35,10 +47,7 @@ inline double meanRatio(const double* p0, const double* p1, const double* p2, co
 // improvement's inner loops do.
 inline double cubedMeanRatio(const double* p0, const double* p1, const double* p2, const double* p3)
 {
-  const double volume = signedVolume6(p0, p1, p2, p3) / 6.0;
-  const double sumSquared = squaredDistance(p0, p1) + squaredDistance(p0, p2) +
-    squaredDistance(p0, p3) + squaredDistance(p1, p2) + squaredDistance(p1, p3) +
-    squaredDistance(p2, p3);
+  const auto [volume, sumSquared] = meanRatioTerms(p0, p1, p2, p3);
   if (!(sumSquared > 0))
   {
     return -1;
@@ -56,10 +65,7 @@ inline double cubedMeanRatio(const double* p0, const double* p1, const double* p
 inline bool meanRatioBelow(
   const double* p0, const double* p1, const double* p2, const double* p3, double target)
 {
-  const double volume = signedVolume6(p0, p1, p2, p3) / 6.0;
-  const double sumSquared = squaredDistance(p0, p1) + squaredDistance(p0, p2) +
-    squaredDistance(p0, p3) + squaredDistance(p1, p2) + squaredDistance(p1, p3) +
-    squaredDistance(p2, p3);
+  const auto [volume, sumSquared] = meanRatioTerms(p0, p1, p2, p3);
   if (!(sumSquared > 0) || volume <= 0)
   {
     return true;
