@@ -19,7 +19,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <vector>
 
 using namespace cgmesh;
 using cgmesh_test::delaunayOptions;
@@ -29,47 +31,42 @@ using cgmesh_test::run;
 namespace
 {
 
-// A block with a cube inside, both materials filled by TetGen with pseudo-random points and no
-// quality bound: full of slivers, as unstructured meshes made without one are, while the faces of
-// both cubes are good triangles. Region 1 is the block around the inner cube, region 2 the cube.
-TetMesh sliverLadenBlock(int pointCount)
+// Pseudo-random numbers in [0, 1), the same on every machine.
+class UnitRandom
 {
-  tetgenio in, out;
-  in.numberofpoints = 16 + pointCount;
-  in.pointlist = new REAL[3 * in.numberofpoints];
-  std::uint64_t state = 12345;
-  for (int i = 0; i < in.numberofpoints; ++i)
+public:
+  double next()
   {
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      const int corner = (i >> axis) & 1;
-      state = state * 6364136223846793005ull + 1442695040888963407ull;
-      in.pointlist[3 * i + axis] = i < 8 ? corner
-        : i < 16                         ? 0.35 + 0.3 * corner
-                                         : static_cast<double>(state >> 11) / 9007199254740992.0;
-    }
+    this->State = this->State * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(this->State >> 11) / 9007199254740992.0;
   }
-  // The six faces of each cube, as quadrilaterals of corner indices.
-  const int faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
-    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
-  in.numberoffacets = 12;
-  in.facetlist = new tetgenio::facet[12];
-  for (int f = 0; f < 12; ++f)
+
+private:
+  std::uint64_t State = 12345;
+};
+
+// `in`'s facets: one polygon each, of the given point indices.
+void setPolygonFacets(tetgenio& in, const std::vector<std::vector<int>>& polygons)
+{
+  in.numberoffacets = static_cast<int>(polygons.size());
+  in.facetlist = new tetgenio::facet[polygons.size()];
+  for (std::size_t f = 0; f < polygons.size(); ++f)
   {
     tetgenio::facet& facet = in.facetlist[f];
     tetgenio::init(&facet);
     facet.numberofpolygons = 1;
     facet.polygonlist = new tetgenio::polygon[1];
     tetgenio::init(facet.polygonlist);
-    facet.polygonlist[0].numberofvertices = 4;
-    facet.polygonlist[0].vertexlist = new int[4];
-    for (int k = 0; k < 4; ++k)
-    {
-      facet.polygonlist[0].vertexlist[k] = faces[f % 6][k] + (f < 6 ? 0 : 8);
-    }
+    facet.polygonlist[0].numberofvertices = static_cast<int>(polygons[f].size());
+    facet.polygonlist[0].vertexlist = new int[polygons[f].size()];
+    std::copy(polygons[f].begin(), polygons[f].end(), facet.polygonlist[0].vertexlist);
   }
-  in.numberofregions = 2;
-  in.regionlist = new REAL[10]{ 0.1, 0.1, 0.1, 1, -1, 0.5, 0.5, 0.5, 2, -1 };
+}
+
+// TetGen's mesh of the piecewise linear complex `in` with its regions and no quality bound.
+TetMesh meshWithoutQualityBound(tetgenio& in)
+{
+  tetgenio out;
   tetgenbehavior behaviour;
   behaviour.parse_commandline(const_cast<char*>("pAQ"));
   tetrahedralize(&behaviour, &in, &out);
@@ -87,6 +84,74 @@ TetMesh sliverLadenBlock(int pointCount)
     mesh.regions.push_back(static_cast<int>(std::lround(out.tetrahedronattributelist[t])));
   }
   return mesh;
+}
+
+// A block with a cube inside, both materials filled by TetGen with pseudo-random points and no
+// quality bound: full of slivers, as unstructured meshes made without one are, while the faces of
+// both cubes are good triangles. Region 1 is the block around the inner cube, region 2 the cube.
+TetMesh sliverLadenBlock(int pointCount)
+{
+  tetgenio in;
+  in.numberofpoints = 16 + pointCount;
+  in.pointlist = new REAL[3 * in.numberofpoints];
+  UnitRandom random;
+  for (int i = 0; i < in.numberofpoints; ++i)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const int corner = (i >> axis) & 1;
+      const double value = random.next();
+      in.pointlist[3 * i + axis] = i < 8 ? corner : i < 16 ? 0.35 + 0.3 * corner : value;
+    }
+  }
+  // The six faces of each cube, as quadrilaterals of corner indices.
+  const int faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  std::vector<std::vector<int>> polygons;
+  for (int f = 0; f < 12; ++f)
+  {
+    polygons.emplace_back();
+    for (int k = 0; k < 4; ++k)
+    {
+      polygons.back().push_back(faces[f % 6][k] + (f < 6 ? 0 : 8));
+    }
+  }
+  setPolygonFacets(in, polygons);
+  in.numberofregions = 2;
+  in.regionlist = new REAL[10]{ 0.1, 0.1, 0.1, 1, -1, 0.5, 0.5, 0.5, 2, -1 };
+  return meshWithoutQualityBound(in);
+}
+
+// A thin fin [0.45, 0.55] x [0, 1] x [0.5, 0.75] (region 2) on a block [0, 2] x [0, 1] x [0, 0.5]
+// (region 1), filled by TetGen with pseudo-random points and no quality bound. The block's front
+// and back faces run around the fin's footprint, and their triangulation holds needles: thin
+// triangles that no point placed off the face can make good tets on.
+TetMesh sliverLadenFinOnBlock(int pointCount)
+{
+  const double corners[16][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 0, 1, 0 }, { 0, 0, 0.5 },
+    { 0.45, 0, 0.5 }, { 0.55, 0, 0.5 }, { 2, 0, 0.5 }, { 0, 1, 0.5 }, { 0.45, 1, 0.5 },
+    { 0.55, 1, 0.5 }, { 2, 1, 0.5 }, { 0.45, 0, 0.75 }, { 0.55, 0, 0.75 }, { 0.45, 1, 0.75 },
+    { 0.55, 1, 0.75 } };
+  tetgenio in;
+  in.numberofpoints = 16 + pointCount;
+  in.pointlist = new REAL[3 * in.numberofpoints];
+  std::copy_n(&corners[0][0], 48, in.pointlist);
+  UnitRandom random;
+  for (int i = 16; i < in.numberofpoints; ++i)
+  {
+    const bool inFin = i % 8 == 0; // the fin holds a tenth of the volume
+    const double x = random.next(), y = random.next(), z = random.next();
+    in.pointlist[3 * i] = inFin ? 0.45 + 0.1 * x : 2 * x;
+    in.pointlist[3 * i + 1] = y;
+    in.pointlist[3 * i + 2] = inFin ? 0.5 + 0.25 * z : 0.5 * z;
+  }
+  setPolygonFacets(in,
+    { { 0, 1, 2, 3 }, { 0, 1, 7, 6, 5, 4 }, { 5, 6, 13, 12 }, { 3, 2, 11, 10, 9, 8 },
+      { 9, 10, 15, 14 }, { 0, 3, 8, 4 }, { 1, 2, 11, 7 }, { 4, 5, 9, 8 }, { 6, 7, 11, 10 },
+      { 5, 6, 10, 9 }, { 5, 12, 14, 9 }, { 6, 13, 15, 10 }, { 12, 13, 15, 14 } });
+  in.numberofregions = 2;
+  in.regionlist = new REAL[10]{ 1, 0.5, 0.25, 1, -1, 0.5, 0.5, 0.6, 2, -1 };
+  return meshWithoutQualityBound(in);
 }
 
 // The share of tets whose smallest dihedral angle is below `degrees`.
@@ -147,6 +212,71 @@ std::vector<std::array<PointId, 3>> keptFacesOf(
     }
   }
   return kept;
+}
+
+// The total area of the kept faces of `tets` and how many of them have a corner at or after
+// `firstNewPoint`.
+double keptFaceArea(const TetList& tets, const std::vector<int>& regions,
+  const std::vector<double>& xyz, PointId firstNewPoint, std::size_t& facesWithNewPoints)
+{
+  double area = 0;
+  facesWithNewPoints = 0;
+  for (const auto& face : keptFacesOf(tets, regions))
+  {
+    area +=
+      triangleArea(xyz.data() + 3 * face[0], xyz.data() + 3 * face[1], xyz.data() + 3 * face[2]);
+    facesWithNewPoints += face[2] >= firstNewPoint ? 1 : 0;
+  }
+  return area;
+}
+
+// The smallest angle, in degrees, of a triangle among the kept faces of `tets`.
+double smallestKeptFaceAngle(
+  const TetList& tets, const std::vector<int>& regions, const std::vector<double>& xyz)
+{
+  double smallest = 180;
+  for (const auto& face : keptFacesOf(tets, regions))
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const double* apex = xyz.data() + 3 * face[k];
+      const double* b = xyz.data() + 3 * face[(k + 1) % 3];
+      const double* c = xyz.data() + 3 * face[(k + 2) % 3];
+      const double u[3] = { b[0] - apex[0], b[1] - apex[1], b[2] - apex[2] };
+      const double v[3] = { c[0] - apex[0], c[1] - apex[1], c[2] - apex[2] };
+      const double cosine = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) /
+        std::sqrt(
+          (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+      smallest = std::min(smallest, std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180 / M_PI);
+    }
+  }
+  return smallest;
+}
+
+// The smallest dihedral angle of `tets`, in degrees.
+double smallestDihedralAngle(const TetList& tets, const std::vector<double>& xyz)
+{
+  double smallest = 180;
+  for (const Tet& tet : tets)
+  {
+    smallest = std::min(smallest,
+      minimumDihedralAngle(xyz.data() + 3 * tet[0], xyz.data() + 3 * tet[1],
+        xyz.data() + 3 * tet[2], xyz.data() + 3 * tet[3]));
+  }
+  return smallest;
+}
+
+// One partition holding the whole mesh, its tets' parents their own ids.
+PartitionMesh wholeMeshAsPartition(const TetMesh& mesh)
+{
+  PartitionMesh whole;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    whole.tets.push_back(mesh.tets[t]);
+    whole.regions.push_back(mesh.regions[t]);
+    whole.parentCells.push_back(t);
+  }
+  return whole;
 }
 
 // A partition TetGen gave back, in global ids over the mesh's points followed by the new ones,
@@ -351,13 +481,7 @@ void test_sliver_laden_input_is_meshed_anew_first()
 void test_whole_mesh_meshed_anew_with_its_boundary_free()
 {
   const TetMesh mesh = sliverLadenBlock(1500);
-  PartitionMesh whole;
-  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
-  {
-    whole.tets.push_back(mesh.tets[t]);
-    whole.regions.push_back(mesh.regions[t]);
-    whole.parentCells.push_back(t);
-  }
+  const PartitionMesh whole = wholeMeshAsPartition(mesh);
   DelaunayParameters parameters{ 0, 2.0, false };
   parameters.shapesOnly = true;
   parameters.keptFacesMaySplit = true;
@@ -366,25 +490,13 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
   const TetGenRunner runner = [&pool](
                                 const tetgenio& in, const std::string& switches, tetgenio& out)
   {
-    CHECK(switches.rfind("pA", 0) == 0 && switches.find('Y') == std::string::npos);
+    CHECK(switches[0] == 'p' && switches.find('A') != std::string::npos &&
+      switches.find('Y') == std::string::npos && switches.find('M') == std::string::npos);
     return pool.runTetGen(0, in, switches, out);
   };
-  // The area of the kept faces, and how many of them have a corner TetGen added.
-  auto keptArea = [&mesh](const TetList& tets, const std::vector<int>& regions,
-                    const std::vector<double>& xyz, std::size_t& facesWithNewPoints)
-  {
-    double area = 0;
-    facesWithNewPoints = 0;
-    for (const auto& face : keptFacesOf(tets, regions))
-    {
-      area +=
-        triangleArea(xyz.data() + 3 * face[0], xyz.data() + 3 * face[1], xyz.data() + 3 * face[2]);
-      facesWithNewPoints += face[2] >= mesh.numberOfPoints() ? 1 : 0;
-    }
-    return area;
-  };
   std::size_t facesWithNewPoints = 0;
-  const double areaBefore = keptArea(mesh.tets, mesh.regions, mesh.coordinates, facesWithNewPoints);
+  const double areaBefore = keptFaceArea(
+    mesh.tets, mesh.regions, mesh.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
 
   PartitionRefinement refinement;
   DelaunayOutcome outcome;
@@ -405,15 +517,16 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
   {
     CHECK_CLOSE(global.volumeOfRegion[region.first], region.second, 1e-12);
   }
-  const double areaAfter =
-    keptArea(global.tets, remeshed.regions, global.coordinates, facesWithNewPoints);
+  const double areaAfter = keptFaceArea(
+    global.tets, remeshed.regions, global.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
   CHECK_CLOSE(areaAfter, areaBefore, 1e-9 * areaBefore);
   std::cout << "whole block meshed anew, boundary free: " << mesh.tets.size() << " tets to "
             << global.tets.size() << ", " << facesWithNewPoints
             << " boundary and interface faces with a point TetGen added\n";
   CHECK(facesWithNewPoints > 0); // TetGen did split kept faces
 
-  // The same call, its first new point on a kept face pushed off it.
+  // The same call, its first new point on the block's boundary pushed off it, away from the
+  // block's centre (scaled from the origin, a point of a face through it stays in that face).
   const TetGenRunner pushing = [&pool](
                                  const tetgenio& in, const std::string& switches, tetgenio& out)
   {
@@ -427,7 +540,8 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
         {
           for (int axis = 0; axis < 3; ++axis)
           {
-            out.pointlist[3 * p + axis] *= 1.01;
+            double& coordinate = out.pointlist[3 * p + axis];
+            coordinate = 0.5 + 1.01 * (coordinate - 0.5);
           }
           return failure;
         }
@@ -444,6 +558,61 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
   CHECK(pushedOutcome.fellBack && !pushedOutcome.remeshed);
   CHECK(pushedOutcome.reason.rfind("TetGen changed", 0) == 0);
   CHECK(pushed.tets == whole.tets && pushedRefinement.newCoordinates.empty());
+}
+
+// Meshed anew as a whole, neighbouring coplanar kept faces become one facet that TetGen
+// triangulates anew: the needles of the fin-on-block's flat faces go, where kept face by face
+// they could only be split into smaller needles and the tets on them stayed slivers. The
+// boundary keeps its area and each region its volume.
+void test_whole_mesh_meshed_anew_loses_the_needles_of_flat_faces()
+{
+  const TetMesh mesh = sliverLadenFinOnBlock(3000);
+  const double needleBefore = smallestKeptFaceAngle(mesh.tets, mesh.regions, mesh.coordinates);
+  CHECK(needleBefore < 3);
+  DelaunayParameters parameters{ 0, 2.0, false };
+  parameters.shapesOnly = true;
+  parameters.keptFacesMaySplit = true;
+  const PartitionSetting setting(mesh, parameters);
+  WorkerPool pool(1);
+  const TetGenRunner runner = [&pool](
+                                const tetgenio& in, const std::string& switches, tetgenio& out)
+  {
+    return pool.runTetGen(0, in, switches, out);
+  };
+  PartitionMesh remeshed = wholeMeshAsPartition(mesh);
+  PartitionRefinement refinement;
+  DelaunayOutcome outcome;
+  CHECK(remeshPartitionDelaunay(
+    remeshed, setting.context, parameters, mesh.numberOfPoints(), runner, refinement, outcome)
+          .ok());
+  CHECK(outcome.remeshed && !outcome.fellBack);
+  const GlobalPartition global = inGlobalIds(mesh, remeshed, refinement);
+  std::map<int, double> before;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    before[mesh.regions[t]] += signedVolume6(mesh, mesh.tets[t]) / 6.0;
+  }
+  CHECK_EQUAL(global.volumeOfRegion.size(), before.size());
+  for (const auto& region : before)
+  {
+    CHECK_CLOSE(global.volumeOfRegion.at(region.first), region.second, 1e-12);
+  }
+  std::size_t facesWithNewPoints = 0;
+  const double areaBefore = keptFaceArea(
+    mesh.tets, mesh.regions, mesh.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
+  const double areaAfter = keptFaceArea(
+    global.tets, remeshed.regions, global.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
+  CHECK_CLOSE(areaAfter, areaBefore, 1e-9 * areaBefore);
+  const double needleAfter =
+    smallestKeptFaceAngle(global.tets, remeshed.regions, global.coordinates);
+  const double dihedralBefore = smallestDihedralAngle(mesh.tets, mesh.coordinates);
+  const double dihedralAfter = smallestDihedralAngle(global.tets, global.coordinates);
+  std::cout << "fin on block meshed anew as a whole: smallest kept face angle " << needleBefore
+            << " to " << needleAfter << " degrees, smallest dihedral angle " << dihedralBefore
+            << " to " << dihedralAfter << " degrees, " << mesh.tets.size() << " to "
+            << global.tets.size() << " tets\n";
+  CHECK(needleAfter > 2 * needleBefore);
+  CHECK(dihedralAfter > 2 * needleBefore);
 }
 
 // The sweep's kernel: a partition meshed anew from its kept faces drops exactly its interior
@@ -541,6 +710,7 @@ int main()
   test_sliver_laden_mesh_conforms_across_threads();
   test_sliver_laden_input_is_meshed_anew_first();
   test_whole_mesh_meshed_anew_with_its_boundary_free();
+  test_whole_mesh_meshed_anew_loses_the_needles_of_flat_faces();
   test_sweep_box_drops_only_interior_points_refinement_made();
   return cgmesh_test::finish("TestDelaunaySlivers");
 }

@@ -20,15 +20,24 @@ namespace cgmesh
 namespace
 {
 
+// Faces meeting at this dihedral angle or flatter count as coplanar when kept faces may merge:
+// exactly coplanar ones do, those of a faceted curved surface (a degree or more apart) stay
+// apart. TetGen's own default, 179.9, would flatten a finely faceted surface a little, which
+// validation then refuses.
+constexpr const char* CoplanarFacetDegrees = "179.9999";
+
 std::string tetgenSwitches(
   const DelaunayParameters& parameters, bool qualityBound, bool sizeField, bool remesh)
 {
   // r: refine the given mesh, or p: mesh the kept faces and the points anew, with A: the region
   // attributes from the region list; Y: keep the given boundary and interface faces (unless they
-  // may split); M: do not merge coplanar facets; Q: quiet; n: return the face neighbours (for
-  // validation); q: the radius-edge bound, when asked; a: the volume bound, when there is one; m:
-  // the sizes given per point, with a size field.
-  std::string switches = remesh ? (parameters.keptFacesMaySplit ? "pAMQn" : "pAYMQn") : "rYMQn";
+  // may split); M: do not merge coplanar facets (unless the kept faces may split, see
+  // mergeCoplanarFaces); Q: quiet; n: return the face neighbours (for validation); q: the
+  // radius-edge bound, when asked; a: the volume bound, when there is one; m: the sizes given per
+  // point, with a size field.
+  std::string switches = remesh
+    ? (parameters.keptFacesMaySplit ? "p" + std::string(CoplanarFacetDegrees) + "AQn" : "pAYMQn")
+    : "rYMQn";
   char bound[64];
   if (qualityBound)
   {
@@ -73,6 +82,20 @@ bool holdsManySlivers(const PartitionMesh& partition, const RefinementContext& c
   return exceedsSliverShare(slivers, partition.tets.size());
 }
 
+// Lets TetGen merge neighbouring coplanar kept faces into one facet, which it may then
+// triangulate anew (Delaunay flips within the facet) as well as split: only for the whole mesh,
+// whose kept faces no other partition shares. Kept as given, each its own facet, a needle
+// triangle of a flat boundary can only be split into smaller needles, and every tet on it has a
+// dihedral angle as small as the needle's: the benchmark's poor input (a fin on a block, its flat
+// faces cut into needles by the fin's footprint) kept 1.9 degrees that way, against serial
+// TetGen's 4.7 and 6.4 now. A single marker is enough: where two kept faces meet with no third at
+// their edge, they lie in one region's boundary or one interface, as any other patch or region
+// brings a third face to that edge, which TetGen keeps as a segment.
+void mergeCoplanarFaces(tetgenio& in)
+{
+  std::fill(in.facetmarkerlist, in.facetmarkerlist + in.numberoffacets, 1);
+}
+
 // One TetGen call of a partition: the order the tets (or when remeshing, the kept faces) are
 // handed over in, whether the radius-edge bound applies, and whether the partition is meshed anew.
 struct TetGenAttempt
@@ -97,6 +120,10 @@ std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMes
     tetgenio in, out;
     session.prepareInput(in, keptFaces, attempt.order, attempt.input, firstDroppablePoint);
     const bool remesh = attempt.input != TetGenInput::Tets;
+    if (remesh && parameters.keptFacesMaySplit)
+    {
+      mergeCoplanarFaces(in);
+    }
     const bool sizeField = context.sizes != nullptr && !parameters.shapesOnly;
     std::string switches = tetgenSwitches(parameters, attempt.qualityBound, sizeField, remesh);
     // Refining given tets that are not Delaunay (a later pass gets TetGen's tets cut by the

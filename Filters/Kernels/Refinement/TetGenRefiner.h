@@ -30,8 +30,9 @@ struct DelaunayParameters
   bool constrainedEdgesOnly = false;
   bool shapesOnly = false;
   // Meshing anew only: TetGen may split the kept faces (no switch Y), as it splits a boundary it
-  // meshes on its own. Only for a partition that holds the whole mesh, whose kept faces are the
-  // domain boundary and the material interfaces alone, shared with no other partition.
+  // meshes on its own, and triangulate coplanar neighbouring ones anew (no switch M). Only for a
+  // partition that holds the whole mesh, whose kept faces are the domain boundary and the
+  // material interfaces alone, shared with no other partition.
   bool keptFacesMaySplit = false;
 };
 
