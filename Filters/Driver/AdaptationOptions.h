@@ -104,7 +104,7 @@ inline const std::vector<ParameterSpec>& parameterTable()
   static const std::vector<ParameterSpec> table = {
     { "NumberOfPartitions", "--partitions", "N", K::Integer, 0, INT_MAX, 0, "", S::Any,
       "partitions; 0 = automatic: 1024 for Template, for Delaunay one per about 30,000 "
-      "forecast output tets (64 to 1024); reduced to the number of tets of a smaller mesh (with "
+      "forecast output tets (8 to 1024); reduced to the number of tets of a smaller mesh (with "
       "a warning when requested); not used with PartitionByRegion",
       &O::numberOfPartitions },
     { "Partitioner", "--partitioner", "NAME", K::Choice, 0, 3, 0, "", S::Any,

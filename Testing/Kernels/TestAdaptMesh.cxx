@@ -167,7 +167,7 @@ void test_partition_count_clamped_to_tets()
 }
 
 // NumberOfPartitions 0: 1024 for templates; for Delaunay one per 30,000 forecast tets (3 x volume
-// / V) within [64, 1024]; never more than the tets, and never a warning.
+// / V) within [8, 1024]; never more than the tets, and never a warning.
 void test_automatic_partition_count()
 {
   TetMesh input;
@@ -178,7 +178,11 @@ void test_automatic_partition_count()
   CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 1024);
   options.method = RefinementMethod::Delaunay;
   options.maximumVolume = 1e-5; // forecast 300,000 tets
-  CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 64);
+  CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 10);
+  options.maximumVolume = 1e-4; // 30,000 tets
+  CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 8);
+  options.maximumVolume = 5e-7; // 6 M tets
+  CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 200);
   options.maximumVolume = 1e-7; // 30 M tets
   CHECK_EQUAL(resolvePlan(input, options, warnings).partitions, 1000);
   options.maximumVolume = 1e-8;
