@@ -17,11 +17,6 @@ namespace cgmesh
 namespace
 {
 
-// The hull faces and the faces between two attributes of TetGen's output, sorted, from the face
-// neighbours it returned (switch n), each checked rather than trusted: a neighbour must be another
-// tet sharing exactly one face with this one, through no face claimed twice, and must name this
-// tet back. False when a check fails. Linear in the output and free of hashing, which matters:
-// the output is 20 times the size of the faces it is compared against.
 // Whether `v` is one of the four entries at `four`: written out, as std::find over them stayed a
 // call per corner, 20 per tet, a third of the validation of a Delaunay partition.
 inline bool amongFour(const int* four, int v)
@@ -29,6 +24,11 @@ inline bool amongFour(const int* four, int v)
   return (four[0] == v) | (four[1] == v) | (four[2] == v) | (four[3] == v);
 }
 
+// The hull faces and the faces between two attributes of TetGen's output, sorted, from the face
+// neighbours it returned (switch n), each checked rather than trusted: a neighbour must be another
+// tet sharing exactly one face with this one, through no face claimed twice, and must name this
+// tet back. False when a check fails. Linear in the output and free of hashing, which matters:
+// the output is 20 times the size of the faces it is compared against.
 bool keptFacesOfOutput(const tetgenio& io, std::vector<std::array<int, 3>>& kept)
 {
   if (io.neighborlist == nullptr)
