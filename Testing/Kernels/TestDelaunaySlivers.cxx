@@ -139,7 +139,7 @@ TetMesh sliverLadenFinOnBlock(int pointCount)
   UnitRandom random;
   for (int i = 16; i < in.numberofpoints; ++i)
   {
-    const bool inFin = i % 8 == 0; // the fin holds a tenth of the volume
+    const bool inFin = i % 8 == 0; // an eighth of the points, in a fortieth of the volume
     const double x = random.next(), y = random.next(), z = random.next();
     in.pointlist[3 * i] = inFin ? 0.45 + 0.1 * x : 2 * x;
     in.pointlist[3 * i + 1] = y;
