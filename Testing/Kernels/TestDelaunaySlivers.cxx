@@ -474,6 +474,46 @@ void test_sliver_laden_input_is_meshed_anew_first()
   }
 }
 
+// Meshing the whole mesh anew, as a sliver-laden input is: the radius-edge bound alone, the kept
+// faces free to split and merge.
+DelaunayParameters wholeMeshParameters()
+{
+  DelaunayParameters parameters{ 0, 2.0, false };
+  parameters.shapesOnly = true;
+  parameters.keptFacesMaySplit = true;
+  return parameters;
+}
+
+// Checks that `remeshed` (`global` in global ids) keeps each region's volume of `mesh` (to 1e-12)
+// and the area of its kept faces (to 1e-9 relative); returns how many of its kept faces have a
+// corner TetGen added.
+std::size_t checkVolumesAndKeptArea(
+  const TetMesh& mesh, const PartitionMesh& remeshed, const GlobalPartition& global)
+{
+  std::map<int, double> before;
+  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    before[mesh.regions[t]] += signedVolume6(mesh, mesh.tets[t]) / 6.0;
+  }
+  CHECK_EQUAL(global.volumeOfRegion.size(), before.size());
+  for (const auto& region : before)
+  {
+    const auto found = global.volumeOfRegion.find(region.first);
+    CHECK(found != global.volumeOfRegion.end());
+    if (found != global.volumeOfRegion.end())
+    {
+      CHECK_CLOSE(found->second, region.second, 1e-12);
+    }
+  }
+  std::size_t facesWithNewPoints = 0;
+  const double areaBefore = keptFaceArea(
+    mesh.tets, mesh.regions, mesh.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
+  const double areaAfter = keptFaceArea(
+    global.tets, remeshed.regions, global.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
+  CHECK_CLOSE(areaAfter, areaBefore, 1e-9 * areaBefore);
+  return facesWithNewPoints;
+}
+
 // The whole mesh meshed anew with its kept faces free to split (a sliver-laden input without
 // tagged triangles): TetGen is called without Y, splits boundary faces, and the result keeps
 // every region's volume and the boundary's area. A result whose new boundary point has left the
@@ -482,9 +522,7 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
 {
   const TetMesh mesh = sliverLadenBlock(1500);
   const PartitionMesh whole = wholeMeshAsPartition(mesh);
-  DelaunayParameters parameters{ 0, 2.0, false };
-  parameters.shapesOnly = true;
-  parameters.keptFacesMaySplit = true;
+  const DelaunayParameters parameters = wholeMeshParameters();
   const PartitionSetting setting(mesh, parameters);
   WorkerPool pool(1);
   const TetGenRunner runner = [&pool](
@@ -494,10 +532,6 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
       switches.find('Y') == std::string::npos && switches.find('M') == std::string::npos);
     return pool.runTetGen(0, in, switches, out);
   };
-  std::size_t facesWithNewPoints = 0;
-  const double areaBefore = keptFaceArea(
-    mesh.tets, mesh.regions, mesh.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
-
   PartitionRefinement refinement;
   DelaunayOutcome outcome;
   PartitionMesh remeshed = whole;
@@ -506,20 +540,8 @@ void test_whole_mesh_meshed_anew_with_its_boundary_free()
           .ok());
   CHECK(outcome.remeshed && !outcome.fellBack);
   CHECK_EQUAL(outcome.droppedPoints, std::int64_t(0));
-  std::map<int, double> before;
-  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
-  {
-    before[mesh.regions[t]] += signedVolume6(mesh, mesh.tets[t]) / 6.0;
-  }
-  GlobalPartition global = inGlobalIds(mesh, remeshed, refinement);
-  CHECK_EQUAL(global.volumeOfRegion.size(), before.size());
-  for (const auto& region : before)
-  {
-    CHECK_CLOSE(global.volumeOfRegion[region.first], region.second, 1e-12);
-  }
-  const double areaAfter = keptFaceArea(
-    global.tets, remeshed.regions, global.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
-  CHECK_CLOSE(areaAfter, areaBefore, 1e-9 * areaBefore);
+  const GlobalPartition global = inGlobalIds(mesh, remeshed, refinement);
+  const std::size_t facesWithNewPoints = checkVolumesAndKeptArea(mesh, remeshed, global);
   std::cout << "whole block meshed anew, boundary free: " << mesh.tets.size() << " tets to "
             << global.tets.size() << ", " << facesWithNewPoints
             << " boundary and interface faces with a point TetGen added\n";
@@ -569,9 +591,7 @@ void test_whole_mesh_meshed_anew_loses_the_needles_of_flat_faces()
   const TetMesh mesh = sliverLadenFinOnBlock(3000);
   const double needleBefore = smallestKeptFaceAngle(mesh.tets, mesh.regions, mesh.coordinates);
   CHECK(needleBefore < 3);
-  DelaunayParameters parameters{ 0, 2.0, false };
-  parameters.shapesOnly = true;
-  parameters.keptFacesMaySplit = true;
+  const DelaunayParameters parameters = wholeMeshParameters();
   const PartitionSetting setting(mesh, parameters);
   WorkerPool pool(1);
   const TetGenRunner runner = [&pool](
@@ -587,22 +607,7 @@ void test_whole_mesh_meshed_anew_loses_the_needles_of_flat_faces()
           .ok());
   CHECK(outcome.remeshed && !outcome.fellBack);
   const GlobalPartition global = inGlobalIds(mesh, remeshed, refinement);
-  std::map<int, double> before;
-  for (CellId t = 0; t < mesh.numberOfTets(); ++t)
-  {
-    before[mesh.regions[t]] += signedVolume6(mesh, mesh.tets[t]) / 6.0;
-  }
-  CHECK_EQUAL(global.volumeOfRegion.size(), before.size());
-  for (const auto& region : before)
-  {
-    CHECK_CLOSE(global.volumeOfRegion.at(region.first), region.second, 1e-12);
-  }
-  std::size_t facesWithNewPoints = 0;
-  const double areaBefore = keptFaceArea(
-    mesh.tets, mesh.regions, mesh.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
-  const double areaAfter = keptFaceArea(
-    global.tets, remeshed.regions, global.coordinates, mesh.numberOfPoints(), facesWithNewPoints);
-  CHECK_CLOSE(areaAfter, areaBefore, 1e-9 * areaBefore);
+  checkVolumesAndKeptArea(mesh, remeshed, global);
   const double needleAfter =
     smallestKeptFaceAngle(global.tets, remeshed.regions, global.coordinates);
   const double dihedralBefore = smallestDihedralAngle(mesh.tets, mesh.coordinates);
