@@ -79,8 +79,10 @@ struct NoPoint
   static PointId value() { return std::numeric_limits<PointId>::min(); }
 };
 
-// A set of point ids (the value is unused).
-using PointIdSet = FlatHashMap<PointId, char, PointIdHash, NoPoint>;
+// A map from point ids, and a set of them (the value unused).
+template <typename Value>
+using PointIdMap = FlatHashMap<PointId, Value, PointIdHash, NoPoint>;
+using PointIdSet = PointIdMap<char>;
 
 // One split of an edge that may be shared with partitions processed later in the same iteration:
 // the edge's two global end points and the global id of the vertex inserted on it.

@@ -34,11 +34,12 @@ PointIdSet cornersOf(const std::vector<Face>& faces, const std::vector<Face>& mo
 
 void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges)
 {
+  edges.reserve(edges.size() + 3 * faces.size() / 2); // a closed surface: 3/2 edges per face
   for (const Face& face : faces)
   {
-    edges.insert(EdgeKey::of(face[0], face[1]));
-    edges.insert(EdgeKey::of(face[1], face[2]));
-    edges.insert(EdgeKey::of(face[0], face[2]));
+    edges.emplace(EdgeKey::of(face[0], face[1]), 0);
+    edges.emplace(EdgeKey::of(face[1], face[2]), 0);
+    edges.emplace(EdgeKey::of(face[0], face[2]), 0);
   }
 }
 

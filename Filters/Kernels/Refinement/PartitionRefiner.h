@@ -13,7 +13,6 @@
 #include "Core/TetMesh.h"
 #include "Refinement/TemplateTable.h"
 
-#include <unordered_set>
 #include <vector>
 
 namespace cgmesh
@@ -48,7 +47,9 @@ struct RefinementContext
 // P, and the three pairs' P sum to S, so P >= S / 3 and the ratio is at least 3/4.
 constexpr double FullSplitChildQuality = 0.75;
 
-using EdgeSet = std::unordered_set<EdgeKey, EdgeKeyHash>;
+// A set of edges (the value is unused). Flat: the Delaunay interface rounds ask it about every
+// long edge of a partition, and a node-based set's look-ups missed the cache each time.
+using EdgeSet = FlatHashMap<EdgeKey, char, EdgeKeyHash, NoEdge>;
 
 // Restricts which long edges a refinement pass may split: all (no set), only the listed ones, or
 // all but the listed ones.
@@ -57,10 +58,7 @@ struct EdgeFilter
   const EdgeSet* edges = nullptr;
   bool onlyListed = true;
 
-  bool allows(const EdgeKey& edge) const
-  {
-    return !edges || (edges->count(edge) != 0) == onlyListed;
-  }
+  bool allows(const EdgeKey& edge) const { return !edges || edges->contains(edge) == onlyListed; }
 };
 
 // Vertices a partition created. Until the colour is finished they carry provisional ids

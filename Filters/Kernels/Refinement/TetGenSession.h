@@ -13,8 +13,8 @@
 #include <cstdint>
 #include <map>
 #include <numeric>
+#include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 class tetgenio;
@@ -59,9 +59,20 @@ enum class TetGenInput
 struct LocalNumbering
 {
   std::vector<PointId> idOfLocal;
-  std::unordered_map<PointId, int> localOfId;
+  PointIdMap<int> localOfId;
   std::vector<std::size_t> tetOfLocal; // a partition tet with that point: where walks start
   std::size_t passed = 0;
+
+  // The local number of a point of the partition; throws std::out_of_range for any other.
+  int localOf(PointId id) const
+  {
+    const int* local = this->localOfId.find(id);
+    if (!local)
+    {
+      throw std::out_of_range("a point outside the partition");
+    }
+    return *local;
+  }
 };
 
 class TetGenSession
