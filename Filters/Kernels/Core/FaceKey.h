@@ -40,6 +40,18 @@ std::array<Index, 3> sortedFace(const Index* corners, int skip)
   return { a, b, c };
 }
 
+// The corner of `tet` opposite `face`, one of its faces: the corner the face lacks.
+template <typename Index>
+int cornerOpposite(const std::array<Index, 4>& tet, const std::array<Index, 3>& face)
+{
+  int corner = 0;
+  while (std::find(face.begin(), face.end(), tet[corner]) != face.end())
+  {
+    ++corner;
+  }
+  return corner;
+}
+
 // Calls visit(face, first, second, count) once per distinct face of the tets: `face` its sorted
 // corners, `first` and `second` the first two tets holding it (second is first when count is 1),
 // `count` how many hold it. Faces are grouped in an open-addressing hash table, linear in the

@@ -265,12 +265,7 @@ void TetLocator::buildFaceNeighbours(const TetList& tets)
   this->FaceNeighbours.assign(4 * tets.size(), -1);
   auto opposite = [&tets](std::size_t tet, const std::array<PointId, 3>& face)
   {
-    int corner = 0;
-    while (std::find(face.begin(), face.end(), tets[tet][corner]) != face.end())
-    {
-      ++corner;
-    }
-    return corner;
+    return cornerOpposite(tets[tet], face);
   };
   forEachDistinctFace(tets.empty() ? nullptr : tets[0].data(), tets.size(),
     [&](

@@ -12,22 +12,24 @@ namespace
 // Enough to halve an interface edge down from 2^8 times the interface length.
 constexpr int MaximumTemplateRounds = 8;
 
-// Vertices of the faces, in a set.
-PointIdSet cornersOf(const std::vector<Face>& faces, const std::vector<Face>& moreFaces)
+// The edges of the faces the marks name.
+void addEdgesOfMarkedFaces(
+  const PartitionMesh& partition, const ConstrainedFaceMarks& marks, EdgeSet& edges)
 {
-  PointIdSet corners;
-  corners.reserve(3 * (faces.size() + moreFaces.size()));
-  for (const auto* list : { &faces, &moreFaces })
+  for (std::size_t t = 0; t < marks.size(); ++t)
   {
-    for (const Face& face : *list)
+    const int faces = marks[t] | (marks[t] >> InterfaceMarkShift);
+    for (int k = 0; faces != 0 && k < 4; ++k)
     {
-      for (PointId p : face)
+      if ((faces >> k) & 1)
       {
-        corners.emplace(p, 0);
+        const Face face = sortedFace(partition.tets[t].data(), k);
+        edges.emplace(EdgeKey::of(face[0], face[1]), 0);
+        edges.emplace(EdgeKey::of(face[1], face[2]), 0);
+        edges.emplace(EdgeKey::of(face[0], face[2]), 0);
       }
     }
   }
-  return corners;
 }
 
 } // namespace
@@ -43,36 +45,49 @@ void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges)
   }
 }
 
-// Only the first round sees the whole partition. It leaves a core that later rounds cannot touch:
-// tets it did not split and that have no corner on a constrained face (a later constrained edge
-// has its ends on such corners or on new midpoints, never on a core corner). Later rounds refine
-// and search the rest, the shell, alone; its faces against the core, which count as boundary
-// there, are told apart by their corners, all of which are core corners, unlike any constrained
-// face's. The shell's tets then go back in their ancestors' places, so the result is the one of
-// rounds over the whole partition. On the FinFET the rounds go through half as many tets.
+// The constrained faces are found once, by hashing the partition's faces; every round hands
+// their marks on to the children (refinePartition()), so later rounds know the faces without
+// looking again. Only the first round sees the whole partition. It leaves a core that later
+// rounds cannot touch: tets it did not split and that have no corner on a constrained face (a
+// later constrained edge has its ends on such corners or on new midpoints, never on a core
+// corner). Later rounds refine the rest, the shell, alone; its tets then go back in their
+// ancestors' places, so the result is the one of rounds over the whole partition. On the FinFET
+// the rounds go through half as many tets.
 Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& context,
   const PostedSplits& received, PartitionRefinement& refinement, std::vector<Face>& boundaryFaces,
   std::vector<Face>& regionInterfaceFaces)
 {
-  findConstrainedFaces(partition, boundaryFaces, regionInterfaceFaces);
+  ConstrainedFaceMarks marks;
+  markConstrainedFaces(partition, marks);
   EdgeSet constrainedEdges;
-  addFaceEdges(boundaryFaces, constrainedEdges);
-  addFaceEdges(regionInterfaceFaces, constrainedEdges);
+  addEdgesOfMarkedFaces(partition, marks, constrainedEdges);
+  PointIdSet constrainedCorners;
+  constrainedCorners.reserve(constrainedEdges.size() / 2);
+  constrainedEdges.forEach(
+    [&](const EdgeKey& edge, char)
+    {
+      constrainedCorners.emplace(edge.low, 0);
+      constrainedCorners.emplace(edge.high, 0);
+    });
   const std::size_t tetsBefore = partition.tets.size();
   std::vector<std::size_t> origins;
-  Status status = refinePartition(
-    partition, context, received, refinement, EdgeFilter{ &constrainedEdges, true }, &origins);
-  if (!status.ok() || partition.tets.size() == tetsBefore)
+  Status status = refinePartition(partition, context, received, refinement,
+    EdgeFilter{ &constrainedEdges, true }, &origins, &marks);
+  if (!status.ok())
   {
-    return status; // nothing split: the faces found above are still the partition's
+    return status;
+  }
+  if (partition.tets.size() == tetsBefore)
+  {
+    appendMarkedFaces(partition, marks, boundaryFaces, regionInterfaceFaces); // nothing split
+    return status;
   }
 
-  const PointIdSet constrainedCorners = cornersOf(boundaryFaces, regionInterfaceFaces);
   const std::size_t count = partition.tets.size();
   std::vector<char> inShell(count, 0);
   PartitionMesh shell;
+  ConstrainedFaceMarks shellMarks;
   std::vector<std::size_t> ancestors; // per shell tet, its tet after the first round
-  PointIdSet coreCorners;
   for (std::size_t t = 0; t < count; ++t)
   {
     const Tet& tet = partition.tets[t];
@@ -84,52 +99,33 @@ Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& 
     if (inShell[t])
     {
       appendTetOf(partition, t, shell);
+      shellMarks.push_back(marks[t]);
       ancestors.push_back(t);
     }
-    else
-    {
-      for (PointId p : tet)
-      {
-        coreCorners.emplace(p, 0);
-      }
-    }
   }
-  auto findShellFaces = [&]()
-  {
-    boundaryFaces.clear();
-    regionInterfaceFaces.clear();
-    findConstrainedFaces(shell, boundaryFaces, regionInterfaceFaces);
-    boundaryFaces.erase(std::remove_if(boundaryFaces.begin(), boundaryFaces.end(),
-                          [&](const Face& face) { return coreCorners.contains(face[0]); }),
-      boundaryFaces.end());
-  };
   for (int round = 1; round < MaximumTemplateRounds; ++round)
   {
-    findShellFaces();
     constrainedEdges.clear();
-    addFaceEdges(boundaryFaces, constrainedEdges);
-    addFaceEdges(regionInterfaceFaces, constrainedEdges);
+    addEdgesOfMarkedFaces(shell, shellMarks, constrainedEdges);
     const std::size_t shellBefore = shell.tets.size();
-    status = refinePartition(
-      shell, context, received, refinement, EdgeFilter{ &constrainedEdges, true }, &origins);
+    status = refinePartition(shell, context, received, refinement,
+      EdgeFilter{ &constrainedEdges, true }, &origins, &shellMarks);
     if (!status.ok())
     {
       return status;
     }
     if (shell.tets.size() == shellBefore)
     {
-      break; // the faces found above are still the shell's
+      break;
     }
     for (std::size_t& origin : origins)
     {
       origin = ancestors[origin];
     }
     ancestors.swap(origins);
-    if (round + 1 == MaximumTemplateRounds)
-    {
-      findShellFaces();
-    }
   }
+  // The core has no constrained face: each has its corners on constrained faces.
+  appendMarkedFaces(shell, shellMarks, boundaryFaces, regionInterfaceFaces);
   PartitionMesh merged;
   std::size_t next = 0;
   for (std::size_t t = 0; t < count; ++t)

@@ -214,6 +214,32 @@ int shortestDiagonal(const SplitSession& session, const std::array<PointId, 10>&
   return best;
 }
 
+// Bit k set: vertex i of a template's local numbering (the corners, then the midpoints of the
+// edges in TetEdgeCorners' order) lies on the parent's face opposite corner k.
+constexpr std::uint8_t ParentFacesOfLocalVertex[10] = { 0xE, 0xD, 0xB, 0x7, 0xC, 0xA, 0x6, 0x9, 0x5,
+  0x3 };
+
+// A child's constrained-face marks from its parent's: a child face lies in the parent face that
+// holds all three of its vertices, if any.
+std::uint8_t childFaceMarks(const LocalTet& child, std::uint8_t parentMarks)
+{
+  std::uint8_t marks = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    const int onParentFaces = ParentFacesOfLocalVertex[child[(i + 1) & 3]] &
+      ParentFacesOfLocalVertex[child[(i + 2) & 3]] & ParentFacesOfLocalVertex[child[(i + 3) & 3]];
+    if (onParentFaces & parentMarks)
+    {
+      marks |= 1 << i;
+    }
+    if (onParentFaces & (parentMarks >> InterfaceMarkShift))
+    {
+      marks |= 1 << (InterfaceMarkShift + i);
+    }
+  }
+  return marks;
+}
+
 } // namespace
 
 Status findInterfaceVertices(const std::vector<PartitionMesh>& partitions, PointId numberOfPoints,
@@ -292,7 +318,7 @@ std::int64_t predictTemplateTetCount(
 
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
   const PostedSplits& received, PartitionRefinement& refinement, const EdgeFilter& filter,
-  std::vector<std::size_t>* origins)
+  std::vector<std::size_t>* origins, ConstrainedFaceMarks* faceMarks)
 {
   try
   {
@@ -347,6 +373,11 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       origins->clear();
       origins->reserve(mostTets);
     }
+    ConstrainedFaceMarks childMarks;
+    if (faceMarks)
+    {
+      childMarks.reserve(mostTets);
+    }
     constexpr std::size_t PrefetchDistance = 8; // tets
     for (std::size_t t = 0; t < tetCount; ++t)
     {
@@ -394,6 +425,10 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
         {
           origins->push_back(t);
         }
+        if (faceMarks)
+        {
+          childMarks.push_back((*faceMarks)[t]);
+        }
         continue;
       }
       const std::vector<LocalTet>& children = splitMask == 63
@@ -413,6 +448,10 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
           refinement.tetsToScreen.push_back(refined.tets.size());
         }
         emit({ vertices[child[0]], vertices[child[1]], vertices[child[2]], vertices[child[3]] });
+        if (faceMarks)
+        {
+          childMarks.push_back(childFaceMarks(child, (*faceMarks)[t]));
+        }
       }
       if (origins)
       {
@@ -420,6 +459,10 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       }
     }
     partition = std::move(refined);
+    if (faceMarks)
+    {
+      faceMarks->swap(childMarks);
+    }
   }
   catch (const std::bad_alloc&)
   {

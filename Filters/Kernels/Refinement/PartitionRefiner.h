@@ -4,6 +4,7 @@
 #ifndef cgmesh_PartitionRefiner_h
 #define cgmesh_PartitionRefiner_h
 
+#include "Core/ConstrainedFaces.h"
 #include "Core/EdgeSplits.h"
 #include "Core/PartitionMesh.h"
 #include "Core/PostedSplits.h"
@@ -95,10 +96,12 @@ Status findInterfaceVertices(const std::vector<PartitionMesh>& partitions, Point
 
 // Refines `partition` in place. The tets' corners are global ids; the result may reference
 // provisional ids (see above). Each tet is replaced where it stands, by itself or by its children
-// one after another; with `origins`, each resulting tet's index in the partition before.
+// one after another; with `origins`, each resulting tet's index in the partition before; with
+// `faceMarks` (one per tet), which faces of each resulting tet lie in constrained faces before.
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
   const PostedSplits& received, PartitionRefinement& refinement,
-  const EdgeFilter& filter = EdgeFilter(), std::vector<std::size_t>* origins = nullptr);
+  const EdgeFilter& filter = EdgeFilter(), std::vector<std::size_t>* origins = nullptr,
+  ConstrainedFaceMarks* faceMarks = nullptr);
 
 // Rewrites provisional ids of the partition's tets, outbox and new point sources into global ids
 // starting at `firstGlobalId`.
