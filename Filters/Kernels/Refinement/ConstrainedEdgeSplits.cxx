@@ -47,12 +47,11 @@ void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges)
 
 // The constrained faces are found once, by hashing the partition's faces; every round hands
 // their marks on to the children (refinePartition()), so later rounds know the faces without
-// looking again. Only the first round sees the whole partition. It leaves a core that later
-// rounds cannot touch: tets it did not split and that have no corner on a constrained face (a
-// later constrained edge has its ends on such corners or on new midpoints, never on a core
-// corner). Later rounds refine the rest, the shell, alone; its tets then go back in their
-// ancestors' places, so the result is the one of rounds over the whole partition. On the FinFET
-// the rounds go through half as many tets.
+// looking again. The rounds see only the shell: the tets with a corner on a constrained face. The
+// others, the core, can hold no constrained edge in any round (its ends lie on such corners or on
+// new midpoints), so they are never split; on the FinFET the shell is half the partition. The
+// shell's tets then go back in their ancestors' places, which makes the result, and the order in
+// which midpoints are made, those of rounds over the whole partition.
 Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& context,
   const PostedSplits& received, PartitionRefinement& refinement, std::vector<Face>& boundaryFaces,
   std::vector<Face>& regionInterfaceFaces)
@@ -69,33 +68,17 @@ Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& 
       constrainedCorners.emplace(edge.low, 0);
       constrainedCorners.emplace(edge.high, 0);
     });
-  const std::size_t tetsBefore = partition.tets.size();
-  std::vector<std::size_t> origins;
-  Status status = refinePartition(partition, context, received, refinement,
-    EdgeFilter{ &constrainedEdges, true }, &origins, &marks);
-  if (!status.ok())
-  {
-    return status;
-  }
-  if (partition.tets.size() == tetsBefore)
-  {
-    appendMarkedFaces(partition, marks, boundaryFaces, regionInterfaceFaces); // nothing split
-    return status;
-  }
 
   const std::size_t count = partition.tets.size();
   std::vector<char> inShell(count, 0);
   PartitionMesh shell;
   ConstrainedFaceMarks shellMarks;
-  std::vector<std::size_t> ancestors; // per shell tet, its tet after the first round
+  std::vector<std::size_t> ancestors; // per shell tet, its tet in the partition
   for (std::size_t t = 0; t < count; ++t)
   {
     const Tet& tet = partition.tets[t];
-    const bool splitChild =
-      (t > 0 && origins[t - 1] == origins[t]) || (t + 1 < count && origins[t + 1] == origins[t]);
-    inShell[t] = splitChild ||
-      std::any_of(
-        tet.begin(), tet.end(), [&](PointId p) { return constrainedCorners.contains(p); });
+    inShell[t] = std::any_of(
+      tet.begin(), tet.end(), [&](PointId p) { return constrainedCorners.contains(p); });
     if (inShell[t])
     {
       appendTetOf(partition, t, shell);
@@ -103,18 +86,23 @@ Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& 
       ancestors.push_back(t);
     }
   }
-  for (int round = 1; round < MaximumTemplateRounds; ++round)
+  const std::size_t shellBefore = shell.tets.size();
+  std::vector<std::size_t> origins;
+  for (int round = 0; round < MaximumTemplateRounds; ++round)
   {
-    constrainedEdges.clear();
-    addEdgesOfMarkedFaces(shell, shellMarks, constrainedEdges);
-    const std::size_t shellBefore = shell.tets.size();
-    status = refinePartition(shell, context, received, refinement,
+    if (round > 0)
+    {
+      constrainedEdges.clear();
+      addEdgesOfMarkedFaces(shell, shellMarks, constrainedEdges);
+    }
+    const std::size_t tetsBefore = shell.tets.size();
+    Status status = refinePartition(shell, context, received, refinement,
       EdgeFilter{ &constrainedEdges, true }, &origins, &shellMarks);
     if (!status.ok())
     {
       return status;
     }
-    if (shell.tets.size() == shellBefore)
+    if (shell.tets.size() == tetsBefore)
     {
       break;
     }
@@ -126,7 +114,15 @@ Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& 
   }
   // The core has no constrained face: each has its corners on constrained faces.
   appendMarkedFaces(shell, shellMarks, boundaryFaces, regionInterfaceFaces);
+  if (shell.tets.size() == shellBefore)
+  {
+    return Status::success(); // nothing split
+  }
   PartitionMesh merged;
+  const std::size_t mergedCount = count - shellBefore + shell.tets.size();
+  merged.tets.reserve(mergedCount);
+  merged.parentCells.reserve(mergedCount);
+  merged.regions.reserve(partition.regions.empty() ? 0 : mergedCount);
   std::size_t next = 0;
   for (std::size_t t = 0; t < count; ++t)
   {
