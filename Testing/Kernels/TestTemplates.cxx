@@ -1,8 +1,11 @@
 // Template refinement of a single tet: every split pattern tiles its parent with positive tets,
 // two tets sharing a face always triangulate it identically, and full splits keep 3/4 of their
 // parent's mean ratio, which lets refinement leave the children of good parents unscreened.
+#include "Core/ConstrainedFaces.h"
 #include "Core/Geometry.h"
 #include "Core/TetQuality.h"
+#include "CubeGenerator.h"
+#include "Refinement/ConstrainedEdgeSplits.h"
 #include "Refinement/PartitionRefiner.h"
 #include "Refinement/TemplateTable.h"
 #include "TestHarness.h"
@@ -359,9 +362,80 @@ void test_most_children_bounds_every_template()
 
 } // namespace
 
+// Constrained-face marks handed on by refinePartition() name exactly the faces a search of the
+// refined partition finds: boundary faces (of the domain and of the cut) and the faces between
+// regions, round after round, through full splits (every long edge) and partial ones (only the
+// constrained edges, as the Delaunay interface rounds split them). An irregular block of three
+// regions, cut out of a jittered cube so that it has boundary faces of both kinds.
+void test_face_marks_follow_the_children()
+{
+  TetMesh cube;
+  CHECK(generateKuhnCube(4, cube).ok());
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> jitter(-0.03, 0.03);
+  for (double& coordinate : cube.coordinates)
+  {
+    const bool onSide = coordinate < 1e-12 || coordinate > 1 - 1e-12;
+    coordinate += onSide ? 0.0 : jitter(random);
+  }
+  PartitionMesh partition;
+  for (std::size_t t = 0; t < cube.tets.size(); ++t)
+  {
+    double centroid[3] = { 0, 0, 0 };
+    for (PointId p : cube.tets[t])
+    {
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        centroid[axis] += 0.25 * cube.point(p)[axis];
+      }
+    }
+    if (centroid[0] < 0.6)
+    {
+      partition.tets.push_back(cube.tets[t]);
+      partition.parentCells.push_back(static_cast<CellId>(t));
+      partition.regions.push_back(centroid[2] < 0.3 ? 1 : (centroid[1] < 0.5 ? 2 : 3));
+    }
+  }
+  const TemplateTable templates;
+  const std::vector<char> interfaceVertex(cube.coordinates.size() / 3, 0);
+  RefinementContext context;
+  context.coordinates = &cube.coordinates;
+  context.interfaceVertex = &interfaceVertex;
+  context.squaredThreshold = 0.04 * 0.04;
+  context.templates = &templates;
+  const PostedSplits noSplits;
+  PartitionRefinement refinement;
+  ConstrainedFaceMarks marks;
+  markConstrainedFaces(partition, marks);
+  for (int round = 0; round < 4; ++round)
+  {
+    std::vector<Face> boundaryFaces, interfaceFaces;
+    findConstrainedFaces(partition, boundaryFaces, interfaceFaces);
+    EdgeSet constrainedEdges;
+    addFaceEdges(boundaryFaces, constrainedEdges);
+    addFaceEdges(interfaceFaces, constrainedEdges);
+    const EdgeFilter filter = round == 0 ? EdgeFilter() : EdgeFilter{ &constrainedEdges, true };
+    const std::size_t tetsBefore = partition.tets.size();
+    std::vector<std::size_t> origins;
+    CHECK(refinePartition(partition, context, noSplits, refinement, filter, &origins, &marks).ok());
+    CHECK(partition.tets.size() > tetsBefore);
+    CHECK_EQUAL(marks.size(), partition.tets.size());
+
+    boundaryFaces.clear();
+    interfaceFaces.clear();
+    findConstrainedFaces(partition, boundaryFaces, interfaceFaces);
+    std::vector<Face> markedBoundary, markedInterface;
+    appendMarkedFaces(partition, marks, markedBoundary, markedInterface);
+    CHECK(!boundaryFaces.empty() && !interfaceFaces.empty());
+    CHECK(markedBoundary == boundaryFaces);
+    CHECK(markedInterface == interfaceFaces);
+  }
+}
+
 int main()
 {
   test_every_template_case();
+  test_face_marks_follow_the_children();
   test_most_children_bounds_every_template();
   test_shared_face_agreement();
   test_full_split_children_keep_three_quarters();
