@@ -263,18 +263,15 @@ TetLocator::Location TetLocator::locate(const double* point) const
 void TetLocator::buildFaceNeighbours(const TetList& tets)
 {
   this->FaceNeighbours.assign(4 * tets.size(), -1);
-  auto opposite = [&tets](std::size_t tet, const std::array<PointId, 3>& face)
-  {
-    return cornerOpposite(tets[tet], face);
-  };
   forEachDistinctFace(tets.empty() ? nullptr : tets[0].data(), tets.size(),
     [&](
       const std::array<PointId, 3>& face, std::size_t first, std::size_t second, std::size_t count)
     {
       if (count == 2)
       {
-        this->FaceNeighbours[4 * first + opposite(first, face)] = static_cast<std::int64_t>(second);
-        this->FaceNeighbours[4 * second + opposite(second, face)] =
+        this->FaceNeighbours[4 * first + cornerOpposite(tets[first], face)] =
+          static_cast<std::int64_t>(second);
+        this->FaceNeighbours[4 * second + cornerOpposite(tets[second], face)] =
           static_cast<std::int64_t>(first);
       }
     });

@@ -12,6 +12,13 @@ namespace
 // Enough to halve an interface edge down from 2^8 times the interface length.
 constexpr int MaximumTemplateRounds = 8;
 
+void addEdgesOf(const Face& face, EdgeSet& edges)
+{
+  edges.emplace(EdgeKey::of(face[0], face[1]), 0);
+  edges.emplace(EdgeKey::of(face[1], face[2]), 0);
+  edges.emplace(EdgeKey::of(face[0], face[2]), 0);
+}
+
 // The edges of the faces the marks name.
 void addEdgesOfMarkedFaces(
   const PartitionMesh& partition, const ConstrainedFaceMarks& marks, EdgeSet& edges)
@@ -23,10 +30,7 @@ void addEdgesOfMarkedFaces(
     {
       if ((faces >> k) & 1)
       {
-        const Face face = sortedFace(partition.tets[t].data(), k);
-        edges.emplace(EdgeKey::of(face[0], face[1]), 0);
-        edges.emplace(EdgeKey::of(face[1], face[2]), 0);
-        edges.emplace(EdgeKey::of(face[0], face[2]), 0);
+        addEdgesOf(sortedFace(partition.tets[t].data(), k), edges);
       }
     }
   }
@@ -39,9 +43,7 @@ void addFaceEdges(const std::vector<Face>& faces, EdgeSet& edges)
   edges.reserve(edges.size() + 3 * faces.size() / 2); // a closed surface: 3/2 edges per face
   for (const Face& face : faces)
   {
-    edges.emplace(EdgeKey::of(face[0], face[1]), 0);
-    edges.emplace(EdgeKey::of(face[1], face[2]), 0);
-    edges.emplace(EdgeKey::of(face[0], face[2]), 0);
+    addEdgesOf(face, edges);
   }
 }
 
