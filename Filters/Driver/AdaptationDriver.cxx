@@ -327,6 +327,7 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
     return status;
   }
   ColorLoopSetup sweeps = setup;
+  sweeps.interfaceVertexAtStart = nullptr; // the refinement's, not the sweeps'
   sweeps.stage = Stage::Sweep;
   sweeps.progressStart = 0;
   sweeps.progressEnd = 1;
@@ -401,6 +402,13 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
     {
       return status;
     }
+  }
+  // `graph` was built for the partitions as they are now, except after Delaunay interface rounds
+  // that were not followed by a rebuild (remeshInputFirst when TetGen found no sliver cluster to
+  // mesh): those split edges, so the points are more than the graph's.
+  if (graph.interfaceVertex.size() == state.coordinates.size() / 3)
+  {
+    setup.interfaceVertexAtStart = &graph.interfaceVertex;
   }
   std::vector<char> formerInterface;
   status = refineAndImprove(options, setup, state, summary, reporter, formerInterface);

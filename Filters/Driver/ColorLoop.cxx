@@ -509,7 +509,9 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     // reads them (improvement freezes each partition's boundary itself).
     reporter.enter(setup.refine ? Phase::Heal : Phase::Improve);
     std::vector<char> interfaceVertex;
-    if (setup.refine)
+    const bool interfaceKnown =
+      setup.refine && iteration == 0 && setup.interfaceVertexAtStart != nullptr;
+    if (setup.refine && !interfaceKnown)
     {
       const Status found =
         findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3),
@@ -522,7 +524,8 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     IterationContext context{ setup, options, RefinementContext(),
       std::vector<PartitionRefinement>(state.partitions.size()), &awaitingImprovement };
     context.refinement.coordinates = &state.coordinates;
-    context.refinement.interfaceVertex = &interfaceVertex;
+    context.refinement.interfaceVertex =
+      interfaceKnown ? setup.interfaceVertexAtStart : &interfaceVertex;
     context.refinement.squaredThreshold = setup.squaredThreshold;
     context.refinement.sizes = state.sizes.empty() ? nullptr : &state.sizes;
     context.refinement.templates = setup.templates;

@@ -63,6 +63,9 @@ struct ColorLoopSetup
   // interior points refinement made (remeshPartitionDelaunay) instead of refined.
   bool remeshSweep = false;
   std::int64_t maximumNumberOfCells = 0; // refuse an iteration forecast to exceed it (0: no limit)
+  // Refinement: the points the partitions share as the loop starts, when known (the partition
+  // graph's); its first pass reads them instead of scanning every tet for them.
+  const std::vector<char>* interfaceVertexAtStart = nullptr;
   bool improve = false;
   bool sizeField = false; // the points carry the input's size field (AdaptationState::sizes)
   ImprovementParameters improvement;

@@ -96,18 +96,12 @@ Status improveInputBetween(double progressStart, double progressEnd,
   {
     return Status::success(); // no tet below the target: nothing changed
   }
-  std::vector<char> formerInterface;
-  status =
-    findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3),
-      parallelForOn(setup.threads), formerInterface);
-  if (!status.ok())
-  {
-    return status;
-  }
+  // Improvement inside partitions leaves each partition's vertices as they were, so the graph's
+  // interface points are still those of the partitions.
   improveOnly.progressStart = progressMiddle;
   improveOnly.progressEnd = progressEnd;
-  status = improveAcrossFormerInterfaces(
-    improveOnly, options, summary.plan.boxesPerAxis, formerInterface, state, summary, reporter);
+  status = improveAcrossFormerInterfaces(improveOnly, options, summary.plan.boxesPerAxis,
+    graph.interfaceVertex, state, summary, reporter);
   if (!status.ok() || summary.aborted)
   {
     return status;

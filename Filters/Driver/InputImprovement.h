@@ -19,9 +19,9 @@ bool improvesInputFirst(const AdaptationOptions& options, const AdaptationPlan& 
 
 // Improves the tets of the refinement partitions in `state` as the refined mesh is improved:
 // inside each partition on the colour loop, then in the box sweeps across the partitions'
-// interfaces. Then every tet goes back to the partition of its input cell (`partitionOfCell`),
-// and `graph` and the colouring (summary and `setup`) are rebuilt: a tet made across an interface
-// can give its partition a vertex of another.
+// interfaces, which `graph` (built for those partitions) gives. Then every tet goes back to the
+// partition of its input cell (`partitionOfCell`), and `graph` and the colouring (summary and
+// `setup`) are rebuilt: a tet made across an interface can give its partition a vertex of another.
 Status improveInputFirst(const AdaptationOptions& options, const std::vector<int>& partitionOfCell,
   PartitionGraph& graph, ColorLoopSetup& setup, AdaptationState& state, AdaptationSummary& summary,
   PhaseReporter& reporter);

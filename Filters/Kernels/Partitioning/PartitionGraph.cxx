@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <utility>
 
 namespace cgmesh
 {
@@ -29,13 +30,15 @@ constexpr std::size_t TetsPerScanChunk = 16384;
 using PartitionSlots = std::vector<std::atomic<int>>;
 
 // The partitions of every point that lies in tets of more than one: group g lists those of the
-// g-th such point in id order, sorted, as members[memberStart[g]] to members[memberStart[g + 1]].
+// g-th such point in id order, sorted, as members[memberStart[g]] to members[memberStart[g + 1]];
+// `interfaceVertex` flags those points.
 // The tets are scanned by chunks concurrently: the first tet to reach a point claims it for its
 // partition, and every other partition met there is kept by the chunk as a (point, partition)
 // pair. The pairs are then counted and placed per point through atomic cursors, and each point's
 // few partitions sorted, so the groups are the same for any schedule.
 Status collectInterfaceGroups(const std::vector<TetRun>& runs, PointId numberOfPoints,
-  const ParallelFor& parallelFor, std::vector<std::int64_t>& memberStart, std::vector<int>& members)
+  const ParallelFor& parallelFor, std::vector<std::int64_t>& memberStart, std::vector<int>& members,
+  std::vector<char>& interfaceVertex)
 {
   struct Chunk
   {
@@ -165,6 +168,7 @@ Status collectInterfaceGroups(const std::vector<TetRun>& runs, PointId numberOfP
   std::vector<std::int64_t> groupsOfRange(static_cast<std::size_t>(pointRanges) + 1, 0);
   std::vector<std::int64_t> membersOfRange(static_cast<std::size_t>(pointRanges) + 1, 0);
   std::vector<int> others(points, 0);
+  interfaceVertex.resize(points);
   status = forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
     [&](std::int64_t begin, std::int64_t end)
     {
@@ -184,6 +188,7 @@ Status collectInterfaceGroups(const std::vector<TetRun>& runs, PointId numberOfP
           *hole = value;
         }
         others[p] = static_cast<int>(std::unique(first, last) - first);
+        interfaceVertex[p] = others[p] > 0;
         groups += others[p] > 0;
         memberCount += others[p] > 0 ? others[p] + 1 : 0;
       }
@@ -236,7 +241,9 @@ Status buildGraphOfRuns(const std::vector<TetRun>& runs, int numberOfPartitions,
 {
   std::vector<std::int64_t> memberStart;
   std::vector<int> members;
-  Status status = collectInterfaceGroups(runs, numberOfPoints, parallelFor, memberStart, members);
+  std::vector<char> interfaceVertex;
+  Status status = collectInterfaceGroups(
+    runs, numberOfPoints, parallelFor, memberStart, members, interfaceVertex);
   if (!status.ok())
   {
     return status;
@@ -312,6 +319,7 @@ Status buildGraphOfRuns(const std::vector<TetRun>& runs, int numberOfPartitions,
   graph = PartitionGraph();
   graph.numberOfPartitions = numberOfPartitions;
   graph.interfacePoints = static_cast<std::int64_t>(groups);
+  graph.interfaceVertex = std::move(interfaceVertex);
   graph.offsets.assign(static_cast<std::size_t>(numberOfPartitions) + 1, 0);
   for (int q = 0; q < numberOfPartitions; ++q)
   {

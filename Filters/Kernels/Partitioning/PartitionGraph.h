@@ -19,6 +19,8 @@ struct PartitionGraph
   std::vector<std::int64_t> offsets; // size numberOfPartitions + 1
   std::vector<int> neighbours;       // sorted within each row
   std::int64_t interfacePoints = 0;  // points in tets of two or more partitions
+  // Per point of the partitioned mesh, 1 for those interface points (graphs built from tets).
+  std::vector<char> interfaceVertex;
 
   int degree(int partition) const
   {
