@@ -34,27 +34,38 @@ std::string joinValues(const std::vector<std::int64_t>& values, const char* sepa
   return joined.str();
 }
 
-// The values ranked `rank` and `rank + 1` from the smallest (0-based) of `values`, reordered.
-// Selecting over all of them cost about 40 ms per 6.5 M values; the 1st and 99th percentiles lie
-// among the few values beyond a sample's order statistic, so only those are ranked when they are
-// enough to hold both ranks (they always are but for freak samples; then all values are ranked).
-std::pair<double, double> valuesAtRanks(std::vector<double>& values, std::size_t rank)
+// Values held in one or more vectors, ranked together.
+using ValueParts = std::vector<const std::vector<double>*>;
+
+// The values ranked `rank` and `rank + 1` from the smallest (0-based) of all `parts` together.
+// Selecting over all of them cost about 40 ms per 6.5 M values, and joining the groups into one
+// copy as much: the 1st and 99th percentiles lie among the few values beyond a sample's order
+// statistic, so only those are gathered and ranked when they are enough to hold both ranks (they
+// are but for freak samples; then all values are).
+std::pair<double, double> valuesAtRanks(const ValueParts& parts, std::size_t rank)
 {
-  const std::size_t count = values.size();
+  std::size_t count = 0;
+  for (const std::vector<double>* part : parts)
+  {
+    count += part->size();
+  }
   const bool fromTop = rank >= count / 2;
   // How many values the near side must hold: up to rank + 1 from the bottom, or from `rank` to
   // the top.
   const std::size_t needed = fromTop ? count - rank : rank + 2;
   constexpr std::size_t SampleSize = 65536;
-  std::vector<double> nearSide;
+  std::vector<double> ranked;
   if (count > 4 * SampleSize && needed < count / 8)
   {
     const std::size_t stride = count / SampleSize;
     std::vector<double> sample;
-    sample.reserve(count / stride + 1);
-    for (std::size_t i = 0; i < count; i += stride)
+    sample.reserve(count / stride + parts.size());
+    for (const std::vector<double>* part : parts)
     {
-      sample.push_back(values[i]);
+      for (std::size_t i = 0; i < part->size(); i += stride)
+      {
+        sample.push_back((*part)[i]);
+      }
     }
     // Twice the expected share, and some: a bound that leaves too few values is rare.
     const std::size_t sampleRank =
@@ -62,20 +73,34 @@ std::pair<double, double> valuesAtRanks(std::vector<double>& values, std::size_t
     const std::size_t at = fromTop ? sample.size() - 1 - sampleRank : sampleRank;
     std::nth_element(sample.begin(), sample.begin() + at, sample.end());
     const double bound = sample[at];
-    nearSide.reserve(2 * (sampleRank + 1) * stride);
-    for (double value : values)
+    ranked.reserve(2 * (sampleRank + 1) * stride);
+    for (const std::vector<double>* part : parts)
     {
-      if (fromTop ? value >= bound : value <= bound)
+      for (double value : *part)
       {
-        nearSide.push_back(value);
+        if (fromTop ? value >= bound : value <= bound)
+        {
+          ranked.push_back(value);
+        }
       }
     }
   }
-  // Every value on the near side of the bound is in nearSide, so ranks counted from that side
-  // are the same in both.
-  const bool useNearSide = nearSide.size() >= needed;
-  std::vector<double>& ranked = useNearSide ? nearSide : values;
-  const std::size_t offset = useNearSide && fromTop ? count - nearSide.size() : 0;
+  // Every value on the near side of the bound was gathered, so ranks counted from that side are
+  // the same among them as among all values.
+  std::size_t offset = 0;
+  if (ranked.size() >= needed)
+  {
+    offset = fromTop ? count - ranked.size() : 0;
+  }
+  else
+  {
+    ranked.clear();
+    ranked.reserve(count);
+    for (const std::vector<double>* part : parts)
+    {
+      ranked.insert(ranked.end(), part->begin(), part->end());
+    }
+  }
   const std::size_t lower = rank - offset;
   std::nth_element(ranked.begin(), ranked.begin() + lower, ranked.end());
   const double lowerValue = ranked[lower];
@@ -88,24 +113,39 @@ std::pair<double, double> valuesAtRanks(std::vector<double>& values, std::size_t
   return { lowerValue, *std::min_element(ranked.begin() + lower + 1, ranked.end()) };
 }
 
-// The p-th percentile of `values` (reordered), interpolating linearly between the two nearest
+// The p-th percentile of all `parts` together, interpolating linearly between the two nearest
 // ranks like numpy.percentile's default; NaN when empty.
-double percentile(std::vector<double>& values, double p)
+double percentile(const ValueParts& parts, double p)
 {
-  if (values.empty())
+  std::size_t count = 0;
+  for (const std::vector<double>* part : parts)
+  {
+    count += part->size();
+  }
+  if (count == 0)
     return std::numeric_limits<double>::quiet_NaN();
-  const double position = p / 100.0 * static_cast<double>(values.size() - 1);
+  const double position = p / 100.0 * static_cast<double>(count - 1);
   const auto lower = static_cast<std::size_t>(std::floor(position));
-  const std::pair<double, double> ranks = valuesAtRanks(values, lower);
+  const std::pair<double, double> ranks = valuesAtRanks(parts, lower);
   return ranks.first + (position - static_cast<double>(lower)) * (ranks.second - ranks.first);
 }
 
-QualitySummary summarizeQuality(std::vector<double>& angles, std::vector<double>& edgeRatios)
+QualitySummary summarizeQuality(const ValueParts& angles, const ValueParts& edgeRatios)
 {
   QualitySummary summary;
-  summary.tets = static_cast<std::int64_t>(angles.size());
-  summary.minDihedralAngleMin = angles.empty() ? std::numeric_limits<double>::quiet_NaN()
-                                               : *std::min_element(angles.begin(), angles.end());
+  summary.tets = 0;
+  summary.minDihedralAngleMin = std::numeric_limits<double>::quiet_NaN();
+  for (const std::vector<double>* part : angles)
+  {
+    summary.tets += static_cast<std::int64_t>(part->size());
+    if (!part->empty())
+    {
+      const double least = *std::min_element(part->begin(), part->end());
+      summary.minDihedralAngleMin = std::isnan(summary.minDihedralAngleMin)
+        ? least
+        : std::min(summary.minDihedralAngleMin, least);
+    }
+  }
   summary.minDihedralAngleP1 = percentile(angles, 1.0);
   summary.edgeRatioP99 = percentile(edgeRatios, 99.0);
   return summary;
@@ -169,13 +209,10 @@ void collectQualitySummaries(vtkUnstructuredGrid* output, RefineStatistics& stat
     angles[near].push_back(angle[cellId]);
     edgeRatios[near].push_back(edgeRatio[cellId]);
   }
-  std::vector<double> allAngles(angles[0]);
-  allAngles.insert(allAngles.end(), angles[1].begin(), angles[1].end());
-  std::vector<double> allEdgeRatios(edgeRatios[0]);
-  allEdgeRatios.insert(allEdgeRatios.end(), edgeRatios[1].begin(), edgeRatios[1].end());
-  statistics.allTets = summarizeQuality(allAngles, allEdgeRatios);
-  statistics.interiorTets = summarizeQuality(angles[0], edgeRatios[0]);
-  statistics.nearInterfaceTets = summarizeQuality(angles[1], edgeRatios[1]);
+  statistics.allTets =
+    summarizeQuality({ &angles[0], &angles[1] }, { &edgeRatios[0], &edgeRatios[1] });
+  statistics.interiorTets = summarizeQuality({ &angles[0] }, { &edgeRatios[0] });
+  statistics.nearInterfaceTets = summarizeQuality({ &angles[1] }, { &edgeRatios[1] });
 }
 
 double phaseSeconds(const RefineStatistics& statistics, const std::string& phase)
