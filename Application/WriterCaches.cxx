@@ -56,19 +56,21 @@ vtkStandardNewMacro(vtkWriterCachedGrid);
 template <typename Value>
 bool componentRange(const Value* values, vtkIdType count, double range[2])
 {
-  if (count == 0 || values[0] != values[0])
+  if (count == 0)
     return false;
+  // Without a branch per value the loop vectorises: the NaN test is gathered, and without NaNs
+  // the running minimum and maximum are VTK's whatever the order.
   Value low = values[0], high = values[0];
-  for (vtkIdType index = 1; index < count; ++index)
+  bool anyNaN = false;
+  for (vtkIdType index = 0; index < count; ++index)
   {
     const Value value = values[index];
-    if (value != value)
-      return false;
-    if (value < low)
-      low = value;
-    else if (value > high)
-      high = value;
+    anyNaN |= value != value;
+    low = value < low ? value : low;
+    high = value > high ? value : high;
   }
+  if (anyNaN)
+    return false;
   range[0] = static_cast<double>(low);
   range[1] = static_cast<double>(high);
   return true;
