@@ -314,15 +314,10 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
   std::vector<char>& formerInterface)
 {
   const std::int64_t poorBefore = summary.poorTets;
-  Status status = runColorLoop(setup, options, state, summary, reporter);
+  ColorLoopSetup refinement = setup;
+  refinement.interfaceVertexAtEnd = &formerInterface;
+  Status status = runColorLoop(refinement, options, state, summary, reporter);
   if (!status.ok() || summary.aborted)
-  {
-    return status;
-  }
-  status =
-    findInterfaceVertices(state.partitions, static_cast<PointId>(state.coordinates.size() / 3),
-      parallelForOn(setup.threads), formerInterface);
-  if (!status.ok())
   {
     return status;
   }

@@ -66,6 +66,8 @@ struct ColorLoopSetup
   // Refinement: the points the partitions share as the loop starts, when known (the partition
   // graph's); its first pass reads them instead of scanning every tet for them.
   const std::vector<char>* interfaceVertexAtStart = nullptr;
+  // Refinement: where the points the partitions share after the last pass go, when wanted.
+  std::vector<char>* interfaceVertexAtEnd = nullptr;
   bool improve = false;
   bool sizeField = false; // the points carry the input's size field (AdaptationState::sizes)
   ImprovementParameters improvement;

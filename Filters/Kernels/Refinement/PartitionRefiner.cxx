@@ -61,6 +61,7 @@ public:
     {
       vertex = *healed;
       this->Refinement.newInterfacePoints.emplace(vertex, 0);
+      this->Refinement.receivedPoints.push_back(vertex);
       ++this->Refinement.healedSplits;
     }
     else

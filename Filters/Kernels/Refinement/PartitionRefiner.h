@@ -75,7 +75,9 @@ struct PartitionRefinement
   PointIdSet newInterfacePoints;
   std::vector<PointId> movedPoints; // vertices quality improvement moved
   std::int64_t healedSplits = 0;    // splits taken from neighbours' outboxes
-  std::int64_t createdSplits = 0;   // splits this partition made itself
+  // The global ids of those splits' vertices: each lies in two partitions now.
+  std::vector<PointId> receivedPoints;
+  std::int64_t createdSplits = 0; // splits this partition made itself
   // With RefinementContext::improvementTarget: the indices (ascending) of the refined partition's
   // tets that may be below it. The others are children of full splits that cannot be: corner
   // children (their parent halved) of a parent at the target, and every child of a parent at the
