@@ -322,7 +322,6 @@ Status refineAndImprove(const AdaptationOptions& options, const ColorLoopSetup& 
     return status;
   }
   ColorLoopSetup sweeps = setup;
-  sweeps.interfaceVertexAtStart = nullptr; // the refinement's, not the sweeps'
   sweeps.stage = Stage::Sweep;
   sweeps.progressStart = 0;
   sweeps.progressEnd = 1;

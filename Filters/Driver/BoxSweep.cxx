@@ -84,6 +84,9 @@ Status runSweepOverBoxes(ColorLoopSetup sweep, const AdaptationOptions& options,
     sweep.colorOfPartition = &colorOfBox;
     sweep.numberOfColors = countColors(colorOfBox);
     sweep.numberOfIterations = 1;
+    // Interface points known for the partitions before are not the boxes'.
+    sweep.interfaceVertexAtStart = nullptr;
+    sweep.interfaceVertexAtEnd = nullptr;
     status = runColorLoop(sweep, options, state, summary, reporter);
   }
   std::copy_if(std::make_move_iterator(staying.begin()), std::make_move_iterator(staying.end()),
