@@ -158,7 +158,7 @@ Status runTetGen(const TetGenArguments& arguments, vtkUnstructuredGrid* input,
   status = readTetGenOutput(out, withRegions, mesh);
   if (!status.ok())
     return status;
-  convertToUnstructuredGrid(mesh, output, arguments.regionArrayName);
+  convertToUnstructuredGrid(std::move(mesh), output, arguments.regionArrayName);
   run.tetgenSeconds = stopwatch.seconds();
   return Status::success();
 }

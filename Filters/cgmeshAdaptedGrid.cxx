@@ -1,5 +1,6 @@
 #include "cgmeshAdaptedGrid.h"
 
+#include "cgmeshHandedOverArrays.h"
 #include "cgmeshPointData.h"
 #include "cgmeshVTKConversion.h"
 
@@ -23,40 +24,39 @@ namespace cgmesh
 namespace
 {
 
-// One value per tet, then `fill` for each triangle after them.
+// One value per tet, then `fill` for each triangle after them. The array takes over `perTet`'s
+// storage when the result is handed over, and a copy of it when the caller keeps the result.
 template <typename Array, typename Values>
-void addCellArray(vtkCellData* cellData, const char* name, const Values& perTet,
-  vtkIdType numberOfCells, typename Array::ValueType fill, const ParallelFor& parallelFor)
+void addCellArray(vtkCellData* cellData, const char* name, Values& perTet, vtkIdType numberOfCells,
+  typename Values::value_type fill, ResultArrays handling)
 {
-  vtkNew<Array> array;
+  Values values = handling == ResultArrays::HandOver ? std::move(perTet) : perTet;
+  values.resize(static_cast<std::size_t>(numberOfCells), fill);
+  vtkSmartPointer<Array> array = arrayTakingOver<Array>(std::move(values));
   array->SetName(name);
-  array->SetNumberOfValues(numberOfCells);
-  auto* value = array->GetPointer(0);
-  const vtkIdType tets = static_cast<vtkIdType>(perTet.size());
-  forEachRange(parallelFor, numberOfCells, IndicesPerCopyRange,
-    [&](std::int64_t begin, std::int64_t end)
-    {
-      for (std::int64_t cellId = begin; cellId < end; ++cellId)
-      {
-        value[cellId] =
-          cellId < tets ? static_cast<typename Array::ValueType>(perTet[cellId]) : fill;
-      }
-    });
   cellData->AddArray(array);
 }
 
 } // namespace
 
-void fillAdaptedGrid(
-  const AdaptedGridInput& input, const AdaptationResult& result, vtkUnstructuredGrid* output)
+void fillAdaptedGrid(const AdaptedGridInput& input, AdaptationResult& result,
+  vtkUnstructuredGrid* output, ResultArrays handling)
 {
   const ParallelFor parallelFor = parallelForOn(result.summary.plan.threads);
-  convertToUnstructuredGrid(result.mesh, output, std::string(), parallelFor);
+  const std::vector<TriangleChild> children = input.triangles
+    ? findTriangleChildren(*input.mesh, input.triangles->triangles, result.mesh, result.provenance)
+    : std::vector<TriangleChild>();
+  if (handling == ResultArrays::HandOver)
+  {
+    convertToUnstructuredGrid(std::move(result.mesh), output, std::string(), parallelFor);
+  }
+  else
+  {
+    convertToUnstructuredGrid(result.mesh, output, std::string(), parallelFor);
+  }
   std::vector<vtkIdType> triangleParents; // input cell ids of the triangles appended
   if (input.triangles)
   {
-    const std::vector<TriangleChild> children =
-      findTriangleChildren(*input.mesh, input.triangles->triangles, result.mesh, result.provenance);
     appendTriangles(children, output);
     for (const TriangleChild& child : children)
     {
@@ -86,15 +86,14 @@ void fillAdaptedGrid(
 
   vtkCellData* cellData = output->GetCellData();
   const vtkIdType cells = output->GetNumberOfCells();
-  addCellArray<vtkIntArray>(
-    cellData, "PartitionId", result.partitionOfCell, cells, -1, parallelFor);
-  addCellArray<vtkIntArray>(cellData, "ColorId", result.colorOfCell, cells, -1, parallelFor);
+  addCellArray<vtkIntArray>(cellData, "PartitionId", result.partitionOfCell, cells, -1, handling);
+  addCellArray<vtkIntArray>(cellData, "ColorId", result.colorOfCell, cells, -1, handling);
   addCellArray<vtkUnsignedCharArray>(
-    cellData, "NearFormerInterface", result.nearFormerInterface, cells, 0, parallelFor);
+    cellData, "NearFormerInterface", result.nearFormerInterface, cells, 0, handling);
   if (!result.edgeLengthRatio.empty())
   {
     addCellArray<vtkDoubleArray>(cellData, "EdgeLengthRatio", result.edgeLengthRatio, cells,
-      std::numeric_limits<double>::quiet_NaN(), parallelFor);
+      std::numeric_limits<double>::quiet_NaN(), handling);
   }
 }
 

@@ -25,10 +25,19 @@ struct AdaptedGridInput
   std::string labelPointArrays;             // comma-separated floating-point arrays kept as labels
 };
 
+// What fillAdaptedGrid does with the result's mesh and per-tet arrays: hands their storage over to
+// the output's arrays (the result is left without them; nothing is copied), or copies them for a
+// caller that still needs them.
+enum class ResultArrays
+{
+  HandOver,
+  Copy
+};
+
 // Fills `output`. The cells of the run's arrays that are triangles get -1 (PartitionId, ColorId),
 // 0 (NearFormerInterface) or NaN (EdgeLengthRatio): they were not refined as cells of a partition.
-void fillAdaptedGrid(
-  const AdaptedGridInput& input, const AdaptationResult& result, vtkUnstructuredGrid* output);
+void fillAdaptedGrid(const AdaptedGridInput& input, AdaptationResult& result,
+  vtkUnstructuredGrid* output, ResultArrays handling);
 
 } // namespace cgmesh
 

@@ -116,8 +116,9 @@ Status addTetQualityArrays(vtkUnstructuredGrid* grid, int threads)
         {
           p[k] = xyz + 3 * corners[k];
         }
-        edgeRatio[cellId] = cgmesh::edgeRatio(p[0], p[1], p[2], p[3]);
-        minDihedralAngle[cellId] = minimumDihedralAngle(p[0], p[1], p[2], p[3]);
+        const TetEdgeVectors edges = tetEdgeVectors(p[0], p[1], p[2], p[3]);
+        edgeRatio[cellId] = cgmesh::edgeRatio(edges);
+        minDihedralAngle[cellId] = minimumDihedralAngle(edges);
       }
     });
   if (status.ok())

@@ -1,5 +1,7 @@
 #include "cgmeshVTKConversion.h"
 
+#include "cgmeshHandedOverArrays.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
@@ -12,6 +14,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -418,63 +421,56 @@ Status convertToTetMesh(vtkUnstructuredGrid* grid, const std::string& regionArra
   return Status::success();
 }
 
-void convertToUnstructuredGrid(const TetMesh& mesh, vtkUnstructuredGrid* grid,
+void convertToUnstructuredGrid(TetMesh&& mesh, vtkUnstructuredGrid* grid,
   const std::string& regionArrayName, const ParallelFor& parallelFor)
 {
-  const vtkIdType numberOfPoints = mesh.numberOfPoints();
-  vtkNew<vtkDoubleArray> coordinates;
+  static_assert(sizeof(Tet) == 4 * sizeof(vtkIdType), "a tet's corners are VTK's connectivity");
+  const vtkIdType numberOfTets = mesh.numberOfTets();
+  vtkSmartPointer<vtkDoubleArray> coordinates =
+    arrayTakingOver<vtkDoubleArray>(std::move(mesh.coordinates), 3);
   coordinates->SetName("Points"); // as vtkPoints names its own
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(numberOfPoints);
-  double* xyz = coordinates->GetPointer(0);
-  forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
-    [&](std::int64_t begin, std::int64_t end)
-    {
-      std::copy(
-        mesh.coordinates.begin() + 3 * begin, mesh.coordinates.begin() + 3 * end, xyz + 3 * begin);
-    });
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
 
-  const vtkIdType numberOfTets = mesh.numberOfTets();
+  vtkSmartPointer<vtkIdTypeArray> connectivity =
+    arrayTakingOver<vtkIdTypeArray>(std::move(mesh.tets));
   vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfValues(numberOfTets + 1);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(4 * numberOfTets);
   vtkIdType* offset = offsets->GetPointer(0);
-  vtkIdType* corners = connectivity->GetPointer(0);
-  vtkNew<vtkIntArray> regions;
-  const bool withRegions = mesh.hasRegions() && !regionArrayName.empty();
-  regions->SetName(regionArrayName.c_str());
-  regions->SetNumberOfValues(withRegions ? numberOfTets : 0);
-  int* region = regions->GetPointer(0);
-  forEachRange(parallelFor, numberOfTets, IndicesPerCopyRange,
+  forEachRange(parallelFor, numberOfTets + 1, IndicesPerCopyRange,
     [&](std::int64_t begin, std::int64_t end)
     {
       for (std::int64_t tetId = begin; tetId < end; ++tetId)
       {
         offset[tetId] = 4 * tetId;
-        for (int corner = 0; corner < 4; ++corner)
-        {
-          corners[4 * tetId + corner] = static_cast<vtkIdType>(mesh.tets[tetId][corner]);
-        }
-        if (withRegions)
-        {
-          region[tetId] = mesh.regions[tetId];
-        }
       }
     });
-  offset[numberOfTets] = 4 * numberOfTets;
   vtkNew<vtkCellArray> cells;
   cells->SetData(offsets, connectivity);
 
   grid->Initialize();
   grid->SetPoints(points);
   grid->SetCells(VTK_TETRA, cells);
-  if (withRegions)
+  if (mesh.hasRegions() && !regionArrayName.empty())
   {
+    vtkSmartPointer<vtkIntArray> regions = arrayTakingOver<vtkIntArray>(std::move(mesh.regions));
+    regions->SetName(regionArrayName.c_str());
     grid->GetCellData()->AddArray(regions);
   }
+  mesh = TetMesh();
+}
+
+void convertToUnstructuredGrid(const TetMesh& mesh, vtkUnstructuredGrid* grid,
+  const std::string& regionArrayName, const ParallelFor& parallelFor)
+{
+  TetMesh copy;
+  copy.coordinates = mesh.coordinates;
+  copy.tets = mesh.tets;
+  if (!regionArrayName.empty())
+  {
+    copy.regions = mesh.regions;
+  }
+  convertToUnstructuredGrid(std::move(copy), grid, regionArrayName, parallelFor);
 }
 
 } // namespace cgmesh

@@ -59,9 +59,15 @@ CGMESHFILTERS_EXPORT Status convertToTetMesh(vtkUnstructuredGrid* grid,
 
 // Replaces the geometry of `grid` with `mesh` (double points, VTK_TETRA cells). When the mesh has
 // regions and `regionArrayName` is not empty, they are stored as an int cell array of that name.
-// `parallelFor` fills the arrays in ranges (plain copies into sized arrays, which cannot fail):
-// the first write to a fresh page costs more than the copy itself, and it is done by the thread
-// that writes it.
+// The grid's points, connectivity and regions take over the mesh's vectors without a copy (see
+// cgmeshHandedOverArrays.h); `mesh` is left empty. `parallelFor` fills the offsets in ranges: the
+// first write to a fresh page costs more than the write itself, and it is done by the thread that
+// writes it.
+CGMESHFILTERS_EXPORT void convertToUnstructuredGrid(TetMesh&& mesh, vtkUnstructuredGrid* grid,
+  const std::string& regionArrayName = std::string(),
+  const ParallelFor& parallelFor = ParallelFor(runSerially));
+
+// The same for a mesh the caller keeps: its points, tets and regions are copied first.
 CGMESHFILTERS_EXPORT void convertToUnstructuredGrid(const TetMesh& mesh, vtkUnstructuredGrid* grid,
   const std::string& regionArrayName = std::string(),
   const ParallelFor& parallelFor = ParallelFor(runSerially));

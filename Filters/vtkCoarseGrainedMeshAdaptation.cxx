@@ -526,8 +526,8 @@ bool vtkCoarseGrainedMeshAdaptation::ConvertPiece(
 }
 
 //------------------------------------------------------------------------------
-bool vtkCoarseGrainedMeshAdaptation::AdaptPiece(
-  PieceRun& run, const cgmesh::AdaptationOptions& options, vtkUnstructuredGrid* output)
+bool vtkCoarseGrainedMeshAdaptation::AdaptPiece(PieceRun& run,
+  const cgmesh::AdaptationOptions& options, vtkUnstructuredGrid* output, bool distributed)
 {
   const cgmesh::Status status = cgmesh::adaptMesh(run.mesh, options, run.result);
   this->Internals->LastSummary = run.result.summary;
@@ -552,7 +552,8 @@ bool vtkCoarseGrainedMeshAdaptation::AdaptPiece(
   adapted.interpolatedPointArrays = this->Internals->Parameters.interpolatedPointArrays;
   adapted.labelPointArrays = this->Internals->Parameters.labelPointArrays;
   const cgmesh::Stopwatch outputStopwatch;
-  cgmesh::fillAdaptedGrid(adapted, run.result, output);
+  cgmesh::fillAdaptedGrid(adapted, run.result, output,
+    distributed ? cgmesh::ResultArrays::Copy : cgmesh::ResultArrays::HandOver);
   this->Internals->LastOutputSeconds = outputStopwatch.seconds();
   this->UpdateProgress(0.9);
   const cgmesh::Stopwatch qualityStopwatch;
@@ -725,7 +726,8 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
     }
     cgmesh::resolveDistributedOptions(*group, run.mesh, options);
   }
-  if (!passed(!hasPiece || this->AdaptPiece(run, options, output), "refining its piece"))
+  if (!passed(!hasPiece || this->AdaptPiece(run, options, output, group != nullptr),
+        "refining its piece"))
   {
     output->Initialize();
     return 0;

@@ -342,8 +342,10 @@ protected:
   bool SeparateTriangles(PieceRun& run);
   bool ConvertPiece(
     PieceRun& run, const std::vector<std::string>& materialLabels, bool distributed);
-  bool AdaptPiece(
-    PieceRun& run, const cgmesh::AdaptationOptions& options, vtkUnstructuredGrid* output);
+  // Refines the piece into `output`. The output takes over the merged mesh's storage unless
+  // `distributed` (the numbering across processes reads the mesh afterwards).
+  bool AdaptPiece(PieceRun& run, const cgmesh::AdaptationOptions& options,
+    vtkUnstructuredGrid* output, bool distributed);
   // Across processes: global point and cell ids, and ghost cells when the pipeline asks for them.
   void NumberAcrossProcesses(const cgmesh::ProcessGroup& group, const PieceRun& run,
     int ghostLevels, vtkUnstructuredGrid* output);

@@ -74,64 +74,103 @@ inline bool meanRatioBelow(
   return 1728.0 * 9.0 * volume * volume < scaled * scaled * scaled;
 }
 
-// Smallest dihedral angle in degrees (70.53 for the regular tet).
-inline double minimumDihedralAngle(
+// The six edge vectors of a tet, corner b minus corner a for the edges of TetEdgeCorners: (0,1),
+// (0,2), (0,3), (1,2), (1,3), (2,3). Both measures below are made of them, so a caller wanting
+// both computes them once.
+struct TetEdgeVectors
+{
+  double edge[6][3];
+};
+
+inline TetEdgeVectors tetEdgeVectors(
   const double* p0, const double* p1, const double* p2, const double* p3)
 {
   const double* p[4] = { p0, p1, p2, p3 };
-  // Face normals (unnormalised) of the faces opposite each corner, pointing outward.
-  double normal[4][3];
-  for (int skip = 0; skip < 4; ++skip)
+  TetEdgeVectors vectors;
+  for (int e = 0; e < 6; ++e)
   {
-    const double* a = p[(skip + 1) % 4];
-    const double* b = p[(skip + 2) % 4];
-    const double* c = p[(skip + 3) % 4];
-    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-    double* n = normal[skip];
-    n[0] = u[1] * v[2] - u[2] * v[1];
-    n[1] = u[2] * v[0] - u[0] * v[2];
-    n[2] = u[0] * v[1] - u[1] * v[0];
-    const double* opposite = p[skip];
-    const double toOpposite =
-      n[0] * (opposite[0] - a[0]) + n[1] * (opposite[1] - a[1]) + n[2] * (opposite[2] - a[2]);
-    if (toOpposite > 0)
+    const double* a = p[TetEdgeCorners[e][0]];
+    const double* b = p[TetEdgeCorners[e][1]];
+    for (int k = 0; k < 3; ++k)
     {
-      n[0] = -n[0];
-      n[1] = -n[1];
-      n[2] = -n[2];
+      vectors.edge[e][k] = b[k] - a[k];
     }
   }
-  // The smallest angle has the largest cosine: one acos instead of six.
+  return vectors;
+}
+
+inline void crossProduct(const double* u, const double* v, double* n)
+{
+  n[0] = u[1] * v[2] - u[2] * v[1];
+  n[1] = u[2] * v[0] - u[0] * v[2];
+  n[2] = u[0] * v[1] - u[1] * v[0];
+}
+
+// Smallest dihedral angle in degrees (70.53 for the regular tet; 180 when every face is
+// degenerate).
+inline double minimumDihedralAngle(const TetEdgeVectors& vectors)
+{
+  const auto& e = vectors.edge;
+  // Normals of the faces opposite corners 0..3, all outward for a positive tet and all inward for
+  // an inverted one: the products of pairs below do not see the difference, so no face needs its
+  // own orientation test.
+  double normal[4][3];
+  crossProduct(e[3], e[4], normal[0]); // (c - b) x (d - b)
+  crossProduct(e[2], e[1], normal[1]); // (d - a) x (c - a)
+  crossProduct(e[0], e[2], normal[2]); // (b - a) x (d - a)
+  crossProduct(e[1], e[0], normal[3]); // (c - a) x (b - a)
+  double inverseLength[4];
+  bool hasArea[4];
+  for (int f = 0; f < 4; ++f)
+  {
+    const double* n = normal[f];
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    hasArea[f] = length > 0;
+    inverseLength[f] = hasArea[f] ? 1.0 / length : 0.0;
+  }
+  // The dihedral angle at an edge is the angle between the two faces holding it, pi minus the
+  // angle between their outward normals. The smallest angle has the largest cosine: one acos.
   double largestCosine = -1;
   bool any = false;
   for (int i = 0; i < 4; ++i)
   {
     for (int j = i + 1; j < 4; ++j)
     {
-      const double dot =
-        normal[i][0] * normal[j][0] + normal[i][1] * normal[j][1] + normal[i][2] * normal[j][2];
-      const double lengths = std::sqrt(
-        (normal[i][0] * normal[i][0] + normal[i][1] * normal[i][1] + normal[i][2] * normal[i][2]) *
-        (normal[j][0] * normal[j][0] + normal[j][1] * normal[j][1] + normal[j][2] * normal[j][2]));
-      if (lengths > 0)
+      if (hasArea[i] && hasArea[j])
       {
-        largestCosine = std::max(largestCosine, std::min(1.0, -dot / lengths));
+        const double dot =
+          normal[i][0] * normal[j][0] + normal[i][1] * normal[j][1] + normal[i][2] * normal[j][2];
+        largestCosine = std::max(largestCosine, -dot * inverseLength[i] * inverseLength[j]);
         any = true;
       }
     }
   }
-  return any ? std::acos(largestCosine) * 180.0 / M_PI : 180.0;
+  return any ? std::acos(std::min(1.0, largestCosine)) * (180.0 / M_PI) : 180.0;
+}
+
+inline double minimumDihedralAngle(
+  const double* p0, const double* p1, const double* p2, const double* p3)
+{
+  return minimumDihedralAngle(tetEdgeVectors(p0, p1, p2, p3));
 }
 
 // Longest edge over shortest edge (1 for the regular tet); infinite when an edge has no length.
+inline double edgeRatio(const TetEdgeVectors& vectors)
+{
+  double shortest = HUGE_VAL;
+  double longest = 0;
+  for (const double* v : vectors.edge)
+  {
+    const double squared = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    shortest = std::min(shortest, squared);
+    longest = std::max(longest, squared);
+  }
+  return shortest > 0 ? std::sqrt(longest / shortest) : HUGE_VAL;
+}
+
 inline double edgeRatio(const double* p0, const double* p1, const double* p2, const double* p3)
 {
-  const double squared[6] = { squaredDistance(p0, p1), squaredDistance(p0, p2),
-    squaredDistance(p0, p3), squaredDistance(p1, p2), squaredDistance(p1, p3),
-    squaredDistance(p2, p3) };
-  const auto range = std::minmax_element(squared, squared + 6);
-  return *range.first > 0 ? std::sqrt(*range.second / *range.first) : HUGE_VAL;
+  return edgeRatio(tetEdgeVectors(p0, p1, p2, p3));
 }
 
 } // namespace cgmesh
