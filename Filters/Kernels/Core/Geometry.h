@@ -43,14 +43,21 @@ inline double signedVolume6(const TetMesh& mesh, const Tet& tet)
     mesh.point(tet[0]), mesh.point(tet[1]), mesh.point(tet[2]), mesh.point(tet[3]));
 }
 
+// n = u x v.
+inline void crossProduct(const double* u, const double* v, double* n)
+{
+  n[0] = u[1] * v[2] - u[2] * v[1];
+  n[1] = u[2] * v[0] - u[0] * v[2];
+  n[2] = u[0] * v[1] - u[1] * v[0];
+}
+
 inline double triangleArea(const double* p0, const double* p1, const double* p2)
 {
   const double a[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
   const double b[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
-  const double cx = a[1] * b[2] - a[2] * b[1];
-  const double cy = a[2] * b[0] - a[0] * b[2];
-  const double cz = a[0] * b[1] - a[1] * b[0];
-  return 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+  double c[3];
+  crossProduct(a, b, c);
+  return 0.5 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
 }
 
 // The six edges of a tet as pairs of local corner indices; the order is part of the template

@@ -36,8 +36,8 @@ TetLocator::TetLocator(const TetList& tets, CoordinatesOf coordinatesOf)
       const double* d = c[k == 3 ? 2 : 3];
       const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
       const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-      const double normal[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-        u[0] * v[1] - u[1] * v[0] };
+      double normal[3];
+      crossProduct(u, v, normal);
       const double height =
         normal[0] * (c[k][0] - a[0]) + normal[1] * (c[k][1] - a[1]) + normal[2] * (c[k][2] - a[2]);
       for (int axis = 0; axis < 3; ++axis)

@@ -99,13 +99,6 @@ inline TetEdgeVectors tetEdgeVectors(
   return vectors;
 }
 
-inline void crossProduct(const double* u, const double* v, double* n)
-{
-  n[0] = u[1] * v[2] - u[2] * v[1];
-  n[1] = u[2] * v[0] - u[0] * v[2];
-  n[2] = u[0] * v[1] - u[1] * v[0];
-}
-
 // Smallest dihedral angle in degrees (70.53 for the regular tet; 180 when every face is
 // degenerate).
 inline double minimumDihedralAngle(const TetEdgeVectors& vectors)
