@@ -190,6 +190,8 @@ void test_point_outside_gets_the_nearest_tet()
 int main()
 {
   test_points_inside_are_found_by_grid_and_walks();
+  test_walks_go_around_a_concave_corner();
+  test_long_walks_go_on_breadth_first();
   test_point_outside_gets_the_nearest_tet();
   return cgmesh_test::finish("TestTetLocator");
 }

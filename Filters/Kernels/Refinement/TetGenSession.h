@@ -151,6 +151,13 @@ private:
   // largest attribute given, so any other attribute marks a cavity of other partitions.
   void fillFacetsAndRegions(tetgenio& in, const std::vector<Face>& keptFaces, TetOrder order);
 
+  // Switch r: per tet, its index in the partition and its region.
+  static constexpr int TetAttributes = 2;
+
+  // Where the walk to the old tet holding output tet t's centroid starts: the old tet it
+  // descends from when TetGen refined, else `cornerTet`.
+  std::size_t walkStart(const tetgenio& out, int t, std::size_t cornerTet) const;
+
   // The region of output tet t; false for a tet in a cavity of other partitions (remeshing only).
   bool regionOfOutputTet(const tetgenio& out, int t, int& region) const;
 
