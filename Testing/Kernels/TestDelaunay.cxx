@@ -1,9 +1,10 @@
 // Delaunay refinement through adaptMesh(): conformity, conserved volumes and material interfaces,
 // identical output for any thread count and for serialised TetGen calls, the volume bound inside
-// partitions, the template fallback when TetGen fails or its worker process dies, and the time a
-// TetGen call may take.
+// partitions, the template fallback when TetGen fails or its worker process dies, new tets'
+// parents, and the time a TetGen call may take.
 #include "AdaptationDriver.h"
 #include "Core/Geometry.h"
+#include "Core/ProvisionalIds.h"
 #include "CubeGenerator.h"
 #include "DelaunayTestSupport.h"
 #include "MeshChecks.h"
@@ -422,6 +423,97 @@ void test_tampered_tetgen_output_is_refused()
 // The time a TetGen call may take: with a volume bound on given tets, about 100 times what its
 // forecast output takes and at least 10 s; without one (or with sizes per point), 30 s plus 2 ms a
 // tet, and for a remeshed partition (no tets) six tets a point.
+// A new tet's parent is an old tet that holds its centroid, wherever the walk to it starts. The
+// first attribute TetGen hands back (the old tet a new one descends from) says where walks start:
+// replaced by unrelated old tets, it leaves every parent that holds its centroid strictly inside
+// as it was; a centroid on a face of two old tets (the Kuhn cube's grid makes a few dozen) may go
+// to either.
+void test_parents_hold_the_centroids_wherever_walks_start()
+{
+  TetMesh mesh;
+  CHECK(generateKuhnCube(3, mesh).ok());
+  const DelaunayParameters parameters{ 0.05 * (1.0 / mesh.numberOfTets()), 2.0, false };
+  const PartitionSetting setting(mesh, parameters);
+  WorkerPool pool(1);
+  struct Refined
+  {
+    PartitionMesh partition;
+    PartitionRefinement refinement;
+  };
+  auto refine = [&](bool scrambleStarts)
+  {
+    Refined refined;
+    refined.partition.tets = mesh.tets;
+    for (CellId t = 0; t < mesh.numberOfTets(); ++t)
+    {
+      refined.partition.parentCells.push_back(t);
+    }
+    const TetGenRunner runner = [&](const tetgenio& in, const std::string& switches, tetgenio& out)
+    {
+      const std::string failure = pool.runTetGen(0, in, switches, out);
+      for (int t = 0; failure.empty() && scrambleStarts && t < out.numberoftetrahedra; ++t)
+      {
+        out.tetrahedronattributelist[static_cast<std::size_t>(t) *
+          out.numberoftetrahedronattributes] = (7919 * t) % in.numberoftetrahedra;
+      }
+      return failure;
+    };
+    DelaunayOutcome outcome;
+    CHECK(refinePartitionDelaunay(refined.partition, setting.context, PostedSplits(), parameters,
+      runner, refined.refinement, outcome)
+            .ok());
+    CHECK(!outcome.fellBack && outcome.tetgenPoints > 0);
+    return refined;
+  };
+  const Refined walked = refine(false);
+  const Refined scrambled = refine(true);
+  CHECK(walked.partition.tets == scrambled.partition.tets);
+  CHECK(walked.partition.parentCells.size() == walked.partition.tets.size());
+  CHECK(scrambled.partition.parentCells.size() == walked.partition.tets.size());
+  // The smallest barycentric coordinate of tet t's centroid in the parent `refined` gave it.
+  auto deepestInParent = [&](const Refined& refined, std::size_t t)
+  {
+    double centroid[3] = { 0, 0, 0 };
+    for (PointId p : walked.partition.tets[t])
+    {
+      const double* x = pointCoordinates(mesh.coordinates, walked.refinement.newCoordinates, p);
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        centroid[axis] += 0.25 * x[axis];
+      }
+    }
+    const Tet& parent = mesh.tets[static_cast<std::size_t>(refined.partition.parentCells[t])];
+    const double* c[4] = { mesh.point(parent[0]), mesh.point(parent[1]), mesh.point(parent[2]),
+      mesh.point(parent[3]) };
+    const double whole = signedVolume6(c[0], c[1], c[2], c[3]);
+    double lowest = 1;
+    for (int k = 0; k < 4; ++k)
+    {
+      const double* q[4] = { c[0], c[1], c[2], c[3] };
+      q[k] = centroid;
+      lowest = std::min(lowest, signedVolume6(q[0], q[1], q[2], q[3]) / whole);
+    }
+    return lowest;
+  };
+  std::size_t onFaces = 0;
+  for (std::size_t t = 0; t < walked.partition.tets.size() && t < scrambled.partition.tets.size();
+       ++t)
+  {
+    const double inWalked = deepestInParent(walked, t);
+    CHECK(inWalked >= -1e-12);
+    CHECK(deepestInParent(scrambled, t) >= -1e-12);
+    if (inWalked > 1e-12)
+    {
+      CHECK(walked.partition.parentCells[t] == scrambled.partition.parentCells[t]);
+    }
+    else
+    {
+      ++onFaces;
+    }
+  }
+  CHECK(onFaces < walked.partition.tets.size() / 10);
+}
+
 void test_tetgen_time_limit_follows_the_forecast_output()
 {
   tetgenio in;
@@ -448,6 +540,7 @@ int main()
   test_worker_deaths_fall_back_like_failures();
   test_bad_delaunay_options_are_refused();
   test_tampered_tetgen_output_is_refused();
+  test_parents_hold_the_centroids_wherever_walks_start();
   test_tetgen_time_limit_follows_the_forecast_output();
   return cgmesh_test::finish("TestDelaunay");
 }
