@@ -57,11 +57,11 @@ struct ShellTets
 // One round: refines the tets of `shell` the last round made by splitting (in the first round,
 // all) as one partition, and puts each one's result back in its place. A tet the last round left
 // whole can hold no constrained edge too long, nor any edge a neighbour split: it would have been
-// split. On the FinFET's partitions the second round found 39,000 tets to make among 950,000,
-// and a third nothing among 968,000. The tets a round looks at keep their order, so midpoints
-// come in the order a round over the whole shell would make them. Sets `changed` when a tet was
-// split. `edges` holds the constrained edges of the tets looked at, or is empty: then they are
-// gathered here.
+// split. On the FinFET's partitions a second round over the whole shell split tets into 39,000
+// of its 950,000, and a third split none of 968,000. The tets a round looks at keep their order,
+// so midpoints come in the order a round over the whole shell would make them. Sets `changed`
+// when a tet was split. `edges` holds the constrained edges of the tets looked at, or is empty:
+// then they are gathered here.
 Status refineShellRound(ShellTets& shell, EdgeSet& edges, const RefinementContext& context,
   const PostedSplits& received, PartitionRefinement& refinement, bool& changed)
 {
