@@ -60,10 +60,11 @@ struct ShellTets
 // split. On the FinFET's partitions a second round over the whole shell split tets into 39,000
 // of its 950,000, and a third split none of 968,000. The tets a round looks at keep their order,
 // so midpoints come in the order a round over the whole shell would make them. Sets `changed`
-// when a tet was split. `edges` holds the constrained edges of the tets looked at, or is empty:
-// then they are gathered here.
-Status refineShellRound(ShellTets& shell, EdgeSet& edges, const RefinementContext& context,
-  const PostedSplits& received, PartitionRefinement& refinement, bool& changed)
+// when a tet was split. `knownEdges` are the constrained edges of the tets looked at when the
+// caller has them (the first round), else they are gathered here.
+Status refineShellRound(ShellTets& shell, const EdgeSet* knownEdges,
+  const RefinementContext& context, const PostedSplits& received, PartitionRefinement& refinement,
+  bool& changed)
 {
   PartitionMesh looked;
   ConstrainedFaceMarks lookedMarks;
@@ -75,14 +76,15 @@ Status refineShellRound(ShellTets& shell, EdgeSet& edges, const RefinementContex
       lookedMarks.push_back(shell.marks[t]);
     }
   }
-  if (edges.empty())
+  EdgeSet gathered;
+  if (!knownEdges)
   {
-    addEdgesOfMarkedFaces(looked, lookedMarks, edges);
+    addEdgesOfMarkedFaces(looked, lookedMarks, gathered);
   }
   const std::size_t before = looked.tets.size();
   std::vector<std::size_t> origins;
-  Status status = refinePartition(
-    looked, context, received, refinement, EdgeFilter{ &edges, true }, &origins, &lookedMarks);
+  Status status = refinePartition(looked, context, received, refinement,
+    EdgeFilter{ knownEdges ? knownEdges : &gathered, true }, &origins, &lookedMarks);
   changed = status.ok() && looked.tets.size() != before;
   if (!changed)
   {
@@ -169,12 +171,8 @@ Status splitConstrainedEdges(PartitionMesh& partition, const RefinementContext& 
   bool changed = true;
   for (int round = 0; round < MaximumTemplateRounds && changed; ++round)
   {
-    if (round > 0)
-    {
-      constrainedEdges.clear(); // gathered from the tets the round looks at
-    }
-    Status status =
-      refineShellRound(shell, constrainedEdges, context, received, refinement, changed);
+    Status status = refineShellRound(
+      shell, round == 0 ? &constrainedEdges : nullptr, context, received, refinement, changed);
     if (!status.ok())
     {
       return status;
