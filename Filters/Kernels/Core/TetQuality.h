@@ -166,6 +166,108 @@ inline double edgeRatio(const double* p0, const double* p1, const double* p2, co
   return edgeRatio(tetEdgeVectors(p0, p1, p2, p3));
 }
 
+// Both measures above for Lanes tets at once, the coordinates lane by lane (corner, coordinate,
+// lane): the whole-mesh quality arrays call this. Each lane does exactly the operations of
+// minimumDihedralAngle() and edgeRatio(), in their order, so the values are the same bits (the
+// compiler may not reorder IEEE arithmetic), while the loops over the lanes become vector
+// instructions. Only the final acos is taken lane by lane.
+template <int Lanes>
+struct TetLanes
+{
+  double corner[4][3][Lanes];
+};
+
+template <int Lanes>
+inline void dihedralAndEdgeRatioLanes(
+  const TetLanes<Lanes>& tets, double* minDihedralAngle, double* edgeRatio)
+{
+  // Branches become selects between values computed in every lane (a quotient by zero in a lane
+  // that does not use it is harmless), with the flags held as doubles: that is what lets the
+  // compiler vectorize the loops.
+  double edge[6][3][Lanes];
+  for (int e = 0; e < 6; ++e)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      for (int l = 0; l < Lanes; ++l)
+      {
+        edge[e][k][l] =
+          tets.corner[TetEdgeCorners[e][1]][k][l] - tets.corner[TetEdgeCorners[e][0]][k][l];
+      }
+    }
+  }
+  // The face normals of minimumDihedralAngle(): edge u cross edge v.
+  constexpr int NormalEdges[4][2] = { { 3, 4 }, { 2, 1 }, { 0, 2 }, { 1, 0 } };
+  double normal[4][3][Lanes];
+  double inverseLength[4][Lanes];
+  double hasArea[4][Lanes]; // 1 or 0
+  for (int f = 0; f < 4; ++f)
+  {
+    const auto& u = edge[NormalEdges[f][0]];
+    const auto& v = edge[NormalEdges[f][1]];
+    for (int l = 0; l < Lanes; ++l)
+    {
+      normal[f][0][l] = u[1][l] * v[2][l] - u[2][l] * v[1][l];
+      normal[f][1][l] = u[2][l] * v[0][l] - u[0][l] * v[2][l];
+      normal[f][2][l] = u[0][l] * v[1][l] - u[1][l] * v[0][l];
+      const double length = std::sqrt(normal[f][0][l] * normal[f][0][l] +
+        normal[f][1][l] * normal[f][1][l] + normal[f][2][l] * normal[f][2][l]);
+      const double inverse = 1.0 / length;
+      hasArea[f][l] = length > 0 ? 1.0 : 0.0;
+      inverseLength[f][l] = length > 0 ? inverse : 0.0;
+    }
+  }
+  double largestCosine[Lanes];
+  double any[Lanes]; // 1 when some pair of faces has area
+  for (int l = 0; l < Lanes; ++l)
+  {
+    largestCosine[l] = -1;
+    any[l] = 0;
+  }
+  // The pairs of faces in the scalar function's order: (0, 1), (0, 2), (0, 3), (1, 2), ...
+  for (const auto& pair : TetEdgeCorners)
+  {
+    const int i = pair[0], j = pair[1];
+    for (int l = 0; l < Lanes; ++l)
+    {
+      const double dot = normal[i][0][l] * normal[j][0][l] + normal[i][1][l] * normal[j][1][l] +
+        normal[i][2][l] * normal[j][2][l];
+      const double cosine = -dot * inverseLength[i][l] * inverseLength[j][l];
+      const double both = hasArea[i][l] * hasArea[j][l];
+      // A pair without area leaves the largest as it is, as the scalar function skips it.
+      const bool larger = both != 0 && largestCosine[l] < cosine;
+      largestCosine[l] = larger ? cosine : largestCosine[l];
+      any[l] = std::max(any[l], both);
+    }
+  }
+  double shortest[Lanes], longest[Lanes];
+  for (int l = 0; l < Lanes; ++l)
+  {
+    shortest[l] = HUGE_VAL;
+    longest[l] = 0;
+  }
+  for (int e = 0; e < 6; ++e)
+  {
+    for (int l = 0; l < Lanes; ++l)
+    {
+      const double squared = edge[e][0][l] * edge[e][0][l] + edge[e][1][l] * edge[e][1][l] +
+        edge[e][2][l] * edge[e][2][l];
+      shortest[l] = std::min(shortest[l], squared);
+      longest[l] = std::max(longest[l], squared);
+    }
+  }
+  for (int l = 0; l < Lanes; ++l)
+  {
+    const double ratio = std::sqrt(longest[l] / shortest[l]);
+    edgeRatio[l] = shortest[l] > 0 ? ratio : HUGE_VAL;
+  }
+  for (int l = 0; l < Lanes; ++l)
+  {
+    minDihedralAngle[l] =
+      any[l] != 0 ? std::acos(std::min(1.0, largestCosine[l])) * (180.0 / M_PI) : 180.0;
+  }
+}
+
 } // namespace cgmesh
 
 #endif
