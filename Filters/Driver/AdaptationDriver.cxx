@@ -178,11 +178,11 @@ Status partitionAndColor(const TetMesh& input, const AdaptationOptions& options,
   return Status::success();
 }
 
-// The template table is built once per process, by the first run's threads (about 30 ms on one),
-// and never changed afterwards.
-const TemplateTable& templateTable(int threads)
+// The template table is read once per process from the templates compiled in, and checked, and
+// never changed afterwards.
+const TemplateTable& templateTable()
 {
-  static const TemplateTable templates(parallelForOn(threads));
+  static const TemplateTable templates(compiledTemplateData());
   return templates;
 }
 
@@ -199,7 +199,7 @@ ColorLoopSetup refinementSetup(const AdaptationOptions& options, const Adaptatio
   setup.numberOfIterations = delaunayToSizes ? 1 : options.numberOfIterations;
   setup.threads = plan.threads;
   setup.squaredThreshold = plan.edgeLengthThreshold * plan.edgeLengthThreshold;
-  setup.templates = &templateTable(plan.threads);
+  setup.templates = &templateTable();
   setup.orderCornersByCoordinates = options.orderCornersByCoordinates;
   setup.method = options.method;
   setup.delaunay.maximumVolume = plan.volumeBound;
@@ -363,7 +363,7 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
     return status;
   }
   reporter.enter(Phase::Prepare);
-  status = templateTable(summary.plan.threads).status();
+  status = templateTable().status();
   if (!status.ok())
   {
     return status;

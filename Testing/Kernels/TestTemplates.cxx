@@ -432,8 +432,56 @@ void test_face_marks_follow_the_children()
   }
 }
 
+// The templates compiled in at build time are the search's, entry for entry, and a table read
+// from data that has been tampered with refuses to serve: a tet turned inside out, a corner moved,
+// a tet dropped.
+void test_compiled_templates_are_the_searched_ones()
+{
+  const TemplateTable searched;
+  const TemplateTable compiled(compiledTemplateData());
+  CHECK(searched.status().ok());
+  CHECK(compiled.status().ok());
+  for (int mask = 1; mask < 63; ++mask)
+  {
+    CHECK_EQUAL(compiled.mostChildren(mask), searched.mostChildren(mask));
+    for (const auto& ranks : TemplateTable::rankOrders())
+    {
+      CHECK(compiled.partialSplit(mask, ranks) == searched.partialSplit(mask, ranks));
+    }
+  }
+  CHECK_EQUAL(compiled.mostChildren(63), searched.mostChildren(63));
+
+  const TemplateData data = compiledTemplateData();
+  const std::uint32_t tets = data.offsets[TemplateData::Entries];
+  const std::vector<std::uint8_t> original(data.corners, data.corners + 4 * tets);
+  const auto refused =
+    [&](const std::vector<std::uint8_t>& corners, const std::vector<std::uint32_t>& offsets)
+  {
+    return !TemplateTable(TemplateData{ offsets.data(), corners.data() }).status().ok();
+  };
+  const std::vector<std::uint32_t> offsets(data.offsets, data.offsets + TemplateData::Entries + 1);
+  CHECK(!refused(original, offsets));
+  std::mt19937 random(11);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const std::uint32_t t = random() % tets;
+    std::vector<std::uint8_t> inverted = original;
+    std::swap(inverted[4 * t + 2], inverted[4 * t + 3]);
+    CHECK(refused(inverted, offsets));
+    std::vector<std::uint8_t> moved = original;
+    moved[4 * t + random() % 4] = static_cast<std::uint8_t>(random() % 10);
+    CHECK(moved == original || refused(moved, offsets));
+  }
+  // The last tet of the first entry dropped: the entry's offset moves one back, so the next
+  // entry starts with that tet.
+  std::vector<std::uint32_t> shorter = offsets;
+  --shorter[1];
+  CHECK(refused(original, shorter));
+}
+
 int main()
 {
+  test_compiled_templates_are_the_searched_ones();
   test_every_template_case();
   test_face_marks_follow_the_children();
   test_most_children_bounds_every_template();

@@ -334,6 +334,38 @@ std::vector<LocalTet> buildFullSplit(int diagonal)
   return tets;
 }
 
+// Whether `tets` tile the reference tet with exactly the faces `boundary` on its surface: every
+// face seen once from each side inside, once from inside on the surface, and every face of
+// `boundary` there. Checks templates that were not found by the search here (TemplateData).
+bool tilesWithBoundary(const std::vector<LocalTet>& tets, const std::vector<Triangle>& boundary)
+{
+  std::set<Triangle> seen;
+  for (const LocalTet& tet : tets)
+  {
+    for (const Triangle& face : inwardFaces(tet))
+    {
+      if (!seen.insert(face).second)
+      {
+        return false; // two tets on the same side of a face: they overlap
+      }
+    }
+  }
+  std::set<Triangle> surface;
+  for (const Triangle& face : boundary)
+  {
+    surface.insert(canonical(face));
+  }
+  for (const Triangle& face : seen)
+  {
+    if (!seen.count(reversed(face)) && !surface.count(face))
+    {
+      return false; // an open face that is not one of the required surface triangles
+    }
+  }
+  return std::all_of(surface.begin(), surface.end(),
+    [&seen](const Triangle& face) { return seen.count(face) == 1; });
+}
+
 } // namespace
 
 int localEdgeIndex(int a, int b)
@@ -395,6 +427,17 @@ std::vector<std::array<int, 3>> triangulateFace(
   return {};
 }
 
+std::vector<std::array<int, 4>> TemplateTable::rankOrders()
+{
+  std::vector<std::array<int, 4>> orders;
+  std::array<int, 4> ranks = { 0, 1, 2, 3 };
+  do
+  {
+    orders.push_back(ranks);
+  } while (std::next_permutation(ranks.begin(), ranks.end()));
+  return orders;
+}
+
 int TemplateTable::rankCode(const std::array<int, 4>& cornerRanks)
 {
   return cornerRanks[0] | (cornerRanks[1] << 2) | (cornerRanks[2] << 4) | (cornerRanks[3] << 6);
@@ -404,18 +447,13 @@ TemplateTable::TemplateTable(const ParallelFor& parallelFor)
   : Partial(64 * 256)
 {
   const std::int64_t referenceOrientation = orient(0, 1, 2, 3);
-  std::vector<std::array<int, 4>> rankOrders;
-  std::array<int, 4> ranks = { 0, 1, 2, 3 };
-  do
-  {
-    rankOrders.push_back(ranks);
-  } while (std::next_permutation(ranks.begin(), ranks.end()));
+  const std::vector<std::array<int, 4>> orders = rankOrders();
   // Each order fills its own entries; a failed search records its mask (0: none failed).
-  std::vector<int> failedMask(rankOrders.size(), 0);
-  this->Validity = parallelFor(static_cast<std::int64_t>(rankOrders.size()),
+  std::vector<int> failedMask(orders.size(), 0);
+  this->Validity = parallelFor(static_cast<std::int64_t>(orders.size()),
     [&](std::int64_t order)
     {
-      const std::array<int, 4>& orderRanks = rankOrders[order];
+      const std::array<int, 4>& orderRanks = orders[order];
       for (int mask = 1; mask < 63; ++mask)
       {
         std::vector<int> vertices = { 0, 1, 2, 3 };
@@ -449,7 +487,48 @@ TemplateTable::TemplateTable(const ParallelFor& parallelFor)
       return;
     }
   }
+  this->addFullSplits();
+}
 
+TemplateTable::TemplateTable(const TemplateData& data)
+  : Partial(64 * 256)
+{
+  const std::int64_t referenceOrientation = orient(0, 1, 2, 3);
+  const std::vector<std::array<int, 4>> orders = rankOrders();
+  for (int mask = 1; mask < 63; ++mask)
+  {
+    for (std::size_t order = 0; order < orders.size(); ++order)
+    {
+      const std::size_t entry = (mask - 1) * orders.size() + order;
+      std::vector<LocalTet> tets;
+      for (std::uint32_t t = data.offsets[entry]; t < data.offsets[entry + 1]; ++t)
+      {
+        const std::uint8_t* corners = data.corners + 4 * t;
+        const bool inRange = std::all_of(corners, corners + 4,
+          [mask](std::uint8_t v) { return v < 4 || (v < 10 && ((mask >> (v - 4)) & 1)); });
+        if (!inRange)
+        {
+          tets.clear();
+          break;
+        }
+        tets.push_back({ corners[0], corners[1], corners[2], corners[3] });
+      }
+      if (totalOrientation(tets) != referenceOrientation ||
+        !tilesWithBoundary(tets, boundaryTriangulation(mask, orders[order])))
+      {
+        this->Validity = Status::failure(ErrorKind::Internal,
+          "the compiled template for split mask " + std::to_string(mask) + " is not valid");
+        return;
+      }
+      this->Partial[mask * 256 + rankCode(orders[order])] = std::move(tets);
+    }
+  }
+  this->addFullSplits();
+}
+
+void TemplateTable::addFullSplits()
+{
+  const std::int64_t referenceOrientation = orient(0, 1, 2, 3);
   this->MostChildren[0] = 1;
   for (int mask = 1; mask < 63; ++mask)
   {

@@ -26,6 +26,20 @@ namespace cgmesh
 
 using LocalTet = std::array<std::uint8_t, 4>;
 
+// The templates of split masks 1..62 as plain data, in the order the search builds them: for mask
+// m and the k-th order of the corner ranks (TemplateTable::rankOrders()), the child tets
+// are those at corners[4 * t] for t from offsets[(m - 1) * 24 + k] up to the next offset. The
+// build writes them once (TemplateTableGenerator.cxx), so that a run need not search.
+struct TemplateData
+{
+  static constexpr int Entries = 62 * 24;
+  const std::uint32_t* offsets; // Entries + 1
+  const std::uint8_t* corners;
+};
+
+// The data written at build time (CompiledTemplates.cxx).
+TemplateData compiledTemplateData();
+
 class TemplateTable
 {
 public:
@@ -34,6 +48,10 @@ public:
   // for the 24 orders of the corners are independent: `parallelFor` runs them (about 30 ms in
   // all on one thread).
   explicit TemplateTable(const ParallelFor& parallelFor = ParallelFor(runSerially));
+  // Takes the templates from `data` and checks each one as the search's (positive volumes summing
+  // to the parent's, every inner face seen from both sides, the rules' triangles on the surface):
+  // well under a millisecond.
+  explicit TemplateTable(const TemplateData& data);
 
   const Status& status() const { return this->Validity; }
 
@@ -51,8 +69,12 @@ public:
   int mostChildren(int splitMask) const { return this->MostChildren[splitMask]; }
 
   static int rankCode(const std::array<int, 4>& cornerRanks);
+  // The 24 orders of the corner ranks, in std::next_permutation order from 0, 1, 2, 3.
+  static std::vector<std::array<int, 4>> rankOrders();
 
 private:
+  void addFullSplits(); // and MostChildren
+
   std::vector<std::vector<LocalTet>> Partial; // indexed by splitMask * 256 + rankCode
   std::array<int, 64> MostChildren{};
   std::array<std::vector<LocalTet>, 3> Full;
