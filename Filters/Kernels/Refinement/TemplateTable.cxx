@@ -339,31 +339,45 @@ std::vector<LocalTet> buildFullSplit(int diagonal)
 // `boundary` there. Checks templates that were not found by the search here (TemplateData).
 bool tilesWithBoundary(const std::vector<LocalTet>& tets, const std::vector<Triangle>& boundary)
 {
-  std::set<Triangle> seen;
+  // Sorted lists rather than sets: the check runs for every entry of the table at start-up.
+  std::vector<Triangle> seen;
+  seen.reserve(4 * tets.size());
   for (const LocalTet& tet : tets)
   {
-    for (const Triangle& face : inwardFaces(tet))
-    {
-      if (!seen.insert(face).second)
-      {
-        return false; // two tets on the same side of a face: they overlap
-      }
-    }
+    const std::array<Triangle, 4> faces = inwardFaces(tet);
+    seen.insert(seen.end(), faces.begin(), faces.end());
   }
-  std::set<Triangle> surface;
+  std::sort(seen.begin(), seen.end());
+  if (std::adjacent_find(seen.begin(), seen.end()) != seen.end())
+  {
+    return false; // two tets on the same side of a face: they overlap
+  }
+  std::vector<Triangle> surface;
   for (const Triangle& face : boundary)
   {
-    surface.insert(canonical(face));
+    surface.push_back(canonical(face));
   }
+  std::sort(surface.begin(), surface.end());
+  const auto has = [](const std::vector<Triangle>& faces, const Triangle& face)
+  {
+    return std::binary_search(faces.begin(), faces.end(), face);
+  };
+  std::size_t onSurface = 0;
   for (const Triangle& face : seen)
   {
-    if (!seen.count(reversed(face)) && !surface.count(face))
+    if (has(seen, reversed(face)))
+    {
+      continue;
+    }
+    if (!has(surface, face))
     {
       return false; // an open face that is not one of the required surface triangles
     }
+    ++onSurface;
   }
-  return std::all_of(surface.begin(), surface.end(),
-    [&seen](const Triangle& face) { return seen.count(face) == 1; });
+  // Every required triangle is there (each open face is a distinct one of them).
+  return onSurface == surface.size() &&
+    std::adjacent_find(surface.begin(), surface.end()) == surface.end();
 }
 
 } // namespace
