@@ -99,19 +99,22 @@ inline TetEdgeVectors tetEdgeVectors(
   return vectors;
 }
 
+// The normal of the face opposite corner f is edge [f][0] cross edge [f][1] of TetEdgeVectors:
+// (c - b) x (d - b), (d - a) x (c - a), (b - a) x (d - a), (c - a) x (b - a) for corners a, b, c,
+// d. All point outward for a positive tet and all inward for an inverted one: the products of
+// pairs of normals do not see the difference, so no face needs its own orientation test.
+constexpr int FaceNormalEdges[4][2] = { { 3, 4 }, { 2, 1 }, { 0, 2 }, { 1, 0 } };
+
 // Smallest dihedral angle in degrees (70.53 for the regular tet; 180 when every face is
 // degenerate).
 inline double minimumDihedralAngle(const TetEdgeVectors& vectors)
 {
   const auto& e = vectors.edge;
-  // Normals of the faces opposite corners 0..3, all outward for a positive tet and all inward for
-  // an inverted one: the products of pairs below do not see the difference, so no face needs its
-  // own orientation test.
   double normal[4][3];
-  crossProduct(e[3], e[4], normal[0]); // (c - b) x (d - b)
-  crossProduct(e[2], e[1], normal[1]); // (d - a) x (c - a)
-  crossProduct(e[0], e[2], normal[2]); // (b - a) x (d - a)
-  crossProduct(e[1], e[0], normal[3]); // (c - a) x (b - a)
+  for (int f = 0; f < 4; ++f)
+  {
+    crossProduct(e[FaceNormalEdges[f][0]], e[FaceNormalEdges[f][1]], normal[f]);
+  }
   double inverseLength[4];
   bool hasArea[4];
   for (int f = 0; f < 4; ++f)
@@ -196,15 +199,13 @@ inline void dihedralAndEdgeRatioLanes(
       }
     }
   }
-  // The face normals of minimumDihedralAngle(): edge u cross edge v.
-  constexpr int NormalEdges[4][2] = { { 3, 4 }, { 2, 1 }, { 0, 2 }, { 1, 0 } };
-  double normal[4][3][Lanes];
+  double normal[4][3][Lanes]; // as crossProduct() makes them
   double inverseLength[4][Lanes];
   double hasArea[4][Lanes]; // 1 or 0
   for (int f = 0; f < 4; ++f)
   {
-    const auto& u = edge[NormalEdges[f][0]];
-    const auto& v = edge[NormalEdges[f][1]];
+    const auto& u = edge[FaceNormalEdges[f][0]];
+    const auto& v = edge[FaceNormalEdges[f][1]];
     for (int l = 0; l < Lanes; ++l)
     {
       normal[f][0][l] = u[1][l] * v[2][l] - u[2][l] * v[1][l];

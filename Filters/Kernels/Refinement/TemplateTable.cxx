@@ -304,6 +304,19 @@ std::int64_t totalOrientation(const std::vector<LocalTet>& tets)
   return sum;
 }
 
+// Whether `tets` are positive and fill the reference tet's volume exactly.
+bool fillsReference(const std::vector<LocalTet>& tets)
+{
+  return totalOrientation(tets) == orient(0, 1, 2, 3);
+}
+
+// Whether local vertex v (a corner, or 4 + e for the midpoint of edge e) belongs to the template
+// of `splitMask`.
+bool isTemplateVertex(int splitMask, int v)
+{
+  return (v >= 0 && v < 4) || (v >= 4 && v < 10 && ((splitMask >> (v - 4)) & 1));
+}
+
 std::vector<LocalTet> buildFullSplit(int diagonal)
 {
   std::vector<LocalTet> tets;
@@ -460,7 +473,6 @@ int TemplateTable::rankCode(const std::array<int, 4>& cornerRanks)
 TemplateTable::TemplateTable(const ParallelFor& parallelFor)
   : Partial(64 * 256)
 {
-  const std::int64_t referenceOrientation = orient(0, 1, 2, 3);
   const std::vector<std::array<int, 4>> orders = rankOrders();
   // Each order fills its own entries; a failed search records its mask (0: none failed).
   std::vector<int> failedMask(orders.size(), 0);
@@ -470,17 +482,17 @@ TemplateTable::TemplateTable(const ParallelFor& parallelFor)
       const std::array<int, 4>& orderRanks = orders[order];
       for (int mask = 1; mask < 63; ++mask)
       {
-        std::vector<int> vertices = { 0, 1, 2, 3 };
-        for (int e = 0; e < 6; ++e)
+        std::vector<int> vertices;
+        for (int v = 0; v < 10; ++v)
         {
-          if ((mask >> e) & 1)
+          if (isTemplateVertex(mask, v))
           {
-            vertices.push_back(4 + e);
+            vertices.push_back(v);
           }
         }
         std::vector<LocalTet> tets;
         TemplateSearch search(vertices, boundaryTriangulation(mask, orderRanks));
-        if (!search.run(tets) || totalOrientation(tets) != referenceOrientation)
+        if (!search.run(tets) || !fillsReference(tets))
         {
           failedMask[order] = mask;
           return;
@@ -507,7 +519,6 @@ TemplateTable::TemplateTable(const ParallelFor& parallelFor)
 TemplateTable::TemplateTable(const TemplateData& data)
   : Partial(64 * 256)
 {
-  const std::int64_t referenceOrientation = orient(0, 1, 2, 3);
   const std::vector<std::array<int, 4>> orders = rankOrders();
   for (int mask = 1; mask < 63; ++mask)
   {
@@ -518,16 +529,15 @@ TemplateTable::TemplateTable(const TemplateData& data)
       for (std::uint32_t t = data.offsets[entry]; t < data.offsets[entry + 1]; ++t)
       {
         const std::uint8_t* corners = data.corners + 4 * t;
-        const bool inRange = std::all_of(corners, corners + 4,
-          [mask](std::uint8_t v) { return v < 4 || (v < 10 && ((mask >> (v - 4)) & 1)); });
-        if (!inRange)
+        if (!std::all_of(
+              corners, corners + 4, [mask](std::uint8_t v) { return isTemplateVertex(mask, v); }))
         {
-          tets.clear();
+          tets.clear(); // a corner of no vertex of the template: fails the check below
           break;
         }
         tets.push_back({ corners[0], corners[1], corners[2], corners[3] });
       }
-      if (totalOrientation(tets) != referenceOrientation ||
+      if (!fillsReference(tets) ||
         !tilesWithBoundary(tets, boundaryTriangulation(mask, orders[order])))
       {
         this->Validity = Status::failure(ErrorKind::Internal,
@@ -542,7 +552,6 @@ TemplateTable::TemplateTable(const TemplateData& data)
 
 void TemplateTable::addFullSplits()
 {
-  const std::int64_t referenceOrientation = orient(0, 1, 2, 3);
   this->MostChildren[0] = 1;
   for (int mask = 1; mask < 63; ++mask)
   {
@@ -555,7 +564,7 @@ void TemplateTable::addFullSplits()
   for (int diagonal = 0; diagonal < 3; ++diagonal)
   {
     this->Full[diagonal] = buildFullSplit(diagonal);
-    if (totalOrientation(this->Full[diagonal]) != referenceOrientation)
+    if (!fillsReference(this->Full[diagonal]))
     {
       this->Validity = Status::failure(
         ErrorKind::Internal, "invalid full-split template " + std::to_string(diagonal));
