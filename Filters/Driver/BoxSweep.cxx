@@ -10,13 +10,15 @@ namespace cgmesh
 {
 
 std::vector<std::size_t> boxOfClusters(const AdaptationState& state, std::vector<char>& flagged,
-  const BoxLayout& layout, std::size_t largestCluster)
+  const BoxLayout& layout, std::size_t largestCluster, std::size_t holding)
 {
   // Union-find with each set's root its lowest point id, so the result does not depend on the
   // order of the unions.
   LowestRootSets<PointId> clusters(flagged.size());
-  for (const PartitionMesh& partition : state.partitions)
+  const std::size_t looked = std::min(holding, state.partitions.size());
+  for (std::size_t p = 0; p < looked; ++p)
   {
+    const PartitionMesh& partition = state.partitions[p];
     for (const Tet& tet : partition.tets)
     {
       PointId first = -1;
@@ -58,14 +60,23 @@ std::vector<std::size_t> boxOfClusters(const AdaptationState& state, std::vector
 Status runSweepOverBoxes(ColorLoopSetup sweep, const AdaptationOptions& options,
   const BoxLayout& layout, const std::vector<char>& moving, AdaptationState& state,
   AdaptationSummary& summary, PhaseReporter& reporter, std::size_t& boxCount,
-  const std::vector<std::size_t>* boxOfMovingPoint)
+  const std::vector<std::size_t>* boxOfMovingPoint, std::size_t holding)
 {
   const ParallelFor parallelFor = parallelForOn(sweep.threads);
+  // The partitions past `holding` hold no moving tet: set aside unread, put back in order.
+  std::vector<PartitionMesh> unread;
+  if (holding < state.partitions.size())
+  {
+    unread.assign(std::make_move_iterator(state.partitions.begin() + holding),
+      std::make_move_iterator(state.partitions.end()));
+    state.partitions.resize(holding);
+  }
   std::vector<PartitionMesh> boxes;
   Status status = regroupIntoBoxes(
     state.partitions, state.coordinates, layout, parallelFor, boxes, &moving, boxOfMovingPoint);
   if (!status.ok())
   {
+    std::move(unread.begin(), unread.end(), std::back_inserter(state.partitions));
     return status;
   }
   std::vector<PartitionMesh> staying = std::move(state.partitions);
@@ -89,9 +100,12 @@ Status runSweepOverBoxes(ColorLoopSetup sweep, const AdaptationOptions& options,
     sweep.interfaceVertexAtEnd = nullptr;
     status = runColorLoop(sweep, options, state, summary, reporter);
   }
-  std::copy_if(std::make_move_iterator(staying.begin()), std::make_move_iterator(staying.end()),
-    std::back_inserter(state.partitions),
-    [](const PartitionMesh& partition) { return !partition.tets.empty(); });
+  for (std::vector<PartitionMesh>* rest : { &staying, &unread })
+  {
+    std::copy_if(std::make_move_iterator(rest->begin()), std::make_move_iterator(rest->end()),
+      std::back_inserter(state.partitions),
+      [](const PartitionMesh& partition) { return !partition.tets.empty(); });
+  }
   state.improvementLeft.resize(state.partitions.size()); // the staying ones: unknown
   return status;
 }

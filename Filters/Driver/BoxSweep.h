@@ -67,23 +67,31 @@ std::int64_t flagCornersOfSelectedTets(int threads, const AdaptationState& state
   return selected;
 }
 
+// Every tet that touches a flagged point lies in the first `holding` partitions of the state: a
+// sweep looks for them there only. Such a bound comes from an earlier sweep, whose boxes took
+// every tet around the points it flagged.
+constexpr std::size_t AllPartitions = static_cast<std::size_t>(-1);
+
 // Joins the flagged points that are corners of one tet into clusters and names, for each flagged
 // point, the box of `layout` that holds its cluster's lowest point: given to runSweepOverBoxes,
 // a cluster's tets go into one box, never cut by a box face. The points of a cluster of more
 // than `largestCluster` points are unflagged instead: one box would hold it all, a serial task.
+// The tets touching flagged points are looked for in the first `holding` partitions.
 std::vector<std::size_t> boxOfClusters(const AdaptationState& state, std::vector<char>& flagged,
-  const BoxLayout& layout, std::size_t largestCluster = static_cast<std::size_t>(-1));
+  const BoxLayout& layout, std::size_t largestCluster = static_cast<std::size_t>(-1),
+  std::size_t holding = AllPartitions);
 
 // Moves the tets that touch a point flagged in `moving` into the boxes of `layout` and runs
 // `sweep` over them (its graph, colouring and colour count are the boxes'). The other tets stay
 // in their partitions, which follow the boxes in `state.partitions` afterwards (emptied ones
 // left out). `boxCount` becomes the number of boxes: the sweep's partitions are the first
 // `boxCount` ones of `state.partitions`. `boxOfMovingPoint`, when given, names the box of each
-// moving tet by its flagged corners (see regroupIntoBoxes).
+// moving tet by its flagged corners (see regroupIntoBoxes). The moving tets are looked for in
+// the first `holding` partitions only; the others are not read.
 Status runSweepOverBoxes(ColorLoopSetup sweep, const AdaptationOptions& options,
   const BoxLayout& layout, const std::vector<char>& moving, AdaptationState& state,
   AdaptationSummary& summary, PhaseReporter& reporter, std::size_t& boxCount,
-  const std::vector<std::size_t>* boxOfMovingPoint = nullptr);
+  const std::vector<std::size_t>* boxOfMovingPoint = nullptr, std::size_t holding = AllPartitions);
 
 } // namespace cgmesh
 

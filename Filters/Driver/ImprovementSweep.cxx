@@ -46,18 +46,39 @@ constexpr double ClusterSweepQuality = 0.3;
 // came near it: the Big cube's largest (Delaunay, 1,024 partitions, two passes) held 17 corners.
 constexpr std::size_t LargestCluster = 1000;
 
+// Keeps flagged only the points `earlier` flagged as well, and says whether any is left.
+bool keepFlaggedBefore(std::vector<char>& flagged, const std::vector<char>& earlier)
+{
+  bool any = false;
+  for (std::size_t p = 0; p < flagged.size(); ++p)
+  {
+    flagged[p] = flagged[p] && earlier[p];
+    any = any || flagged[p];
+  }
+  return any;
+}
+
 // One improvement sweep over box partitions; `sweepIndex` 0 lays the boxes from the bounding
 // box's corner, 1 shifts them by half a box, 2 puts each cluster of the work left (its tets'
 // corners joined through the tets around them) into one box. Only the tets that share a vertex
 // with a tet to work on move into the boxes; the others stay in their partitions, which follow
 // the boxes. Work is looked for in the first `candidates` partitions; `candidates` becomes the
 // number of boxes, or 0 when there was no work.
+//
+// After the first sweep, `cornersOfWork` holds the points the sweep before flagged, and a sweep
+// moves only the tets around those of them it flags again. All of their tets went into that
+// sweep's boxes, the first `candidates` partitions, and stayed there (a box's changes stay
+// inside it), so the rest of the mesh is not read: on the FinFET's 6.5 M refined tets a full
+// pass took 0.04 s of 0.05 s a sweep. Work at a corner flagged for the first time, a few per
+// cent of a sweep's (on the FinFET 74 of 2,733 points), waits at the box faces, frozen.
 Status improveOverBoxes(const ColorLoopSetup& setup, const AdaptationOptions& options, int cells,
   int sweepIndex, const std::vector<char>& formerInterface, std::size_t& candidates,
-  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter)
+  std::vector<char>& cornersOfWork, AdaptationState& state, AdaptationSummary& summary,
+  PhaseReporter& reporter)
 {
   reporter.enter(Phase::Improve);
-  std::vector<char> cornersOfWork;
+  std::vector<char> flaggedBefore;
+  std::swap(flaggedBefore, cornersOfWork);
   Status status = Status::success();
   const bool clustered = sweepIndex == 2;
   ImprovementParameters work = setup.improvement;
@@ -68,11 +89,12 @@ Status improveOverBoxes(const ColorLoopSetup& setup, const AdaptationOptions& op
   }
   if (flagCornersOfWork(setup, work, formerInterface, candidates, state, cornersOfWork, status) ==
       0 ||
-    !status.ok())
+    !status.ok() || (sweepIndex > 0 && !keepFlaggedBefore(cornersOfWork, flaggedBefore)))
   {
     candidates = 0;
     return status; // nothing near a former interface needs work
   }
+  const std::size_t holding = sweepIndex > 0 ? candidates : AllPartitions;
   const BoxLayout layout = layBoxes(
     state.coordinates, cells, clustered ? 0 : 0.5 * sweepIndex, parallelForOn(setup.threads));
   ColorLoopSetup sweep = setup;
@@ -83,18 +105,18 @@ Status improveOverBoxes(const ColorLoopSetup& setup, const AdaptationOptions& op
   sweep.progressEnd = sweep.progressStart + share;
   if (!clustered)
   {
-    return runSweepOverBoxes(
-      sweep, options, layout, cornersOfWork, state, summary, reporter, candidates);
+    return runSweepOverBoxes(sweep, options, layout, cornersOfWork, state, summary, reporter,
+      candidates, nullptr, holding);
   }
   const std::vector<std::size_t> boxOfPoint =
-    boxOfClusters(state, cornersOfWork, layout, LargestCluster);
+    boxOfClusters(state, cornersOfWork, layout, LargestCluster, holding);
   if (std::find(cornersOfWork.begin(), cornersOfWork.end(), 1) == cornersOfWork.end())
   {
     candidates = 0;
     return status; // only clusters too large for one box
   }
-  return runSweepOverBoxes(
-    sweep, options, layout, cornersOfWork, state, summary, reporter, candidates, &boxOfPoint);
+  return runSweepOverBoxes(sweep, options, layout, cornersOfWork, state, summary, reporter,
+    candidates, &boxOfPoint, holding);
 }
 
 } // namespace
@@ -119,10 +141,11 @@ Status improveAcrossFormerInterfaces(const ColorLoopSetup& setup, const Adaptati
   // The tets that stayed out of a layout's boxes are as they were, so the next looks for work in
   // those boxes only.
   std::size_t candidates = state.partitions.size();
+  std::vector<char> cornersOfWork;
   for (int sweepIndex = 0; sweepIndex < SweepCount && candidates > 0; ++sweepIndex)
   {
     Status status = improveOverBoxes(sweeps, options, boxesPerAxis, sweepIndex, formerInterface,
-      candidates, state, summary, reporter);
+      candidates, cornersOfWork, state, summary, reporter);
     if (!status.ok() || summary.aborted)
     {
       return status;

@@ -79,6 +79,7 @@ private:
   double totalVolume(const std::vector<Corners>& tets) const;
   bool swapFace(int t, int skip);
   bool smoothVertex(int v);
+  void smoothVerticesOfPoorTets(ImprovementStatistics& statistics);
   bool isFixed(int v);
   bool needsWork(int t) const;
   bool mayBeFree(int v);
@@ -120,6 +121,7 @@ private:
   };
   std::vector<char> Fixedness; // a Fixity per vertex, found when first asked (isFixed)
   std::vector<char> Moved;
+  std::vector<char> SmoothingCandidate; // scratch of smoothVerticesOfPoorTets
   // A failed collapse of a is a function of a's ball: its tets, their corners' positions and the
   // incidence of those corners (the link condition). Every change stamps the vertices it touches
   // with the clock, so a vertex whose ball holds no stamp newer than its failure would fail again

@@ -377,6 +377,41 @@ bool Improver::smoothVertex(int v)
   return false;
 }
 
+// smoothVertex() for every vertex in order, skipping those with no poor tet around them, which it
+// would leave: only the corners of poor tets are visited, and the corners of the tets a move
+// changed, which may have become poor. The moves are those of visiting every vertex; the
+// neighbourhoods are mostly good tets, whose vertices cost a walk over their tets each.
+void Improver::smoothVerticesOfPoorTets(ImprovementStatistics& statistics)
+{
+  std::vector<char>& visit = this->SmoothingCandidate;
+  visit.assign(this->IdOf.size(), 0);
+  for (std::size_t t = 0; t < this->Tets.size(); ++t)
+  {
+    if (this->Alive[t] && this->Qualities[t] < this->TargetCubed)
+    {
+      for (int v : this->Tets[t])
+      {
+        visit[v] = 1;
+      }
+    }
+  }
+  for (int v = 0; v < static_cast<int>(this->IdOf.size()); ++v)
+  {
+    if (!visit[v] || !this->smoothVertex(v))
+    {
+      continue;
+    }
+    ++statistics.vertexMoves;
+    for (int t : this->Incident[v])
+    {
+      for (int w : this->Tets[t])
+      {
+        visit[w] = 1;
+      }
+    }
+  }
+}
+
 void Improver::run(const ImprovementParameters& parameters, ImprovementStatistics& statistics)
 {
   this->Parameters = parameters;
@@ -426,15 +461,16 @@ void Improver::run(const ImprovementParameters& parameters, ImprovementStatistic
     const int tetsNow = static_cast<int>(this->Tets.size());
     for (int t = 0; t < tetsNow; ++t)
     {
+      if (this->Qualities[t] >= this->TargetCubed)
+      {
+        continue; // swaps start from poor tets (swapFace): most tets stop here, without a call
+      }
       for (int skip = 0; skip < 4 && this->Alive[t]; ++skip)
       {
         statistics.faceSwaps += this->swapFace(t, skip);
       }
     }
-    for (int v = 0; v < static_cast<int>(this->IdOf.size()); ++v)
-    {
-      statistics.vertexMoves += this->smoothVertex(v);
-    }
+    this->smoothVerticesOfPoorTets(statistics);
   }
 }
 
