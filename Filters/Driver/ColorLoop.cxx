@@ -550,8 +550,9 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     context.refinement.sizes = state.sizes.empty() ? nullptr : &state.sizes;
     context.refinement.templates = setup.templates;
     context.refinement.orderCornersByCoordinates = setup.orderCornersByCoordinates;
-    // Template children of good parents are good (FullSplitChildQuality): refinement lists the
-    // others, and improvement screens those alone. Short edges have no such bound.
+    // Template children of good parents are good (FullSplitChildQuality): refinement measures the
+    // others as it makes them and lists the poor ones, and improvement screens those alone. Short
+    // edges have no such bound.
     if (setup.refine && setup.improve && setup.method == RefinementMethod::Template &&
       setup.improvement.improve && !setup.improvement.coarsen)
     {

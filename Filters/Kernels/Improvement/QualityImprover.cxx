@@ -542,15 +542,16 @@ PointIdSet verticesOfWork(const PartitionMesh& partition, const PartitionPoints&
   return vertices;
 }
 
-// A one-sided filter over a point set: a clear bit proves a point is not in it. Sized at 16 bits
-// per point, it answers most questions about a partition's tets (a few dozen vertices of work
-// among thousands of points) without a probe of the hash set.
+// A one-sided filter over a point set: a clear bit proves a point is not in it. Sized at 64 bits
+// per point, it answers nearly all questions about a partition's tets (a few dozen vertices of
+// work among thousands of points) without a probe of the hash set: at 16 bits a tet in seven
+// took one, and the FinFET's extractions took 0.073 instead of 0.068 s.
 class PointFilter
 {
 public:
   explicit PointFilter(const PointIdSet& points)
   {
-    while ((std::size_t{ 1 } << this->Bits) < 16 * points.size())
+    while ((std::size_t{ 1 } << this->Bits) < 64 * points.size())
     {
       ++this->Bits;
     }

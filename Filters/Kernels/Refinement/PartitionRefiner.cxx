@@ -406,6 +406,17 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
             session.midpointOf(tet[TetEdgeCorners[e][0]], tet[TetEdgeCorners[e][1]]);
         }
       }
+      // Lists the tet about to be emitted when its mean ratio is below the target: measured
+      // here, while its corners' coordinates are at hand, improvement screens it alone.
+      auto listIfPoor = [&](const Tet& child)
+      {
+        if (meanRatioBelow(session.coordinatesOf(child[0]), session.coordinatesOf(child[1]),
+              session.coordinatesOf(child[2]), session.coordinatesOf(child[3]),
+              context.improvementTarget))
+        {
+          refinement.tetsToScreen.push_back(refined.tets.size());
+        }
+      };
       auto emit = [&](const Tet& child)
       {
         refined.tets.push_back(child);
@@ -419,7 +430,7 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       {
         if (listsTetsToScreen)
         {
-          refinement.tetsToScreen.push_back(refined.tets.size());
+          listIfPoor(tet);
         }
         emit(tet);
         if (origins)
@@ -444,11 +455,13 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       for (const LocalTet& child : children)
       {
         const bool isCorner = child[0] < 4 || child[1] < 4 || child[2] < 4 || child[3] < 4;
+        const Tet corners = { vertices[child[0]], vertices[child[1]], vertices[child[2]],
+          vertices[child[3]] };
         if (listsTetsToScreen && parentQuality < (isCorner ? cornersClearAt : allClearAt))
         {
-          refinement.tetsToScreen.push_back(refined.tets.size());
+          listIfPoor(corners);
         }
-        emit({ vertices[child[0]], vertices[child[1]], vertices[child[2]], vertices[child[3]] });
+        emit(corners);
         if (faceMarks)
         {
           childMarks.push_back(childFaceMarks(child, (*faceMarks)[t]));

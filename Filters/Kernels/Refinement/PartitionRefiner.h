@@ -79,9 +79,10 @@ struct PartitionRefinement
   std::vector<PointId> receivedPoints;
   std::int64_t createdSplits = 0; // splits this partition made itself
   // With RefinementContext::improvementTarget: the indices (ascending) of the refined partition's
-  // tets that may be below it. The others are children of full splits that cannot be: corner
-  // children (their parent halved) of a parent at the target, and every child of a parent at the
-  // target / FullSplitChildQuality.
+  // tets below it. Children of full splits that cannot be are not measured: corner children
+  // (their parent halved) of a parent at the target, and every child of a parent at the target /
+  // FullSplitChildQuality. The others are, as they are made (their corners' coordinates at hand):
+  // improvement screened 400 k tets of the FinFET's 6.5 M at 77 ns each, from memory, before.
   std::vector<std::size_t> tetsToScreen;
 };
 
