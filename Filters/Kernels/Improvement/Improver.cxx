@@ -342,6 +342,12 @@ CellId Improver::parentOf(const Corners& corners, const std::vector<int>& replac
 // values, without looking each point up again.
 bool Improver::needsWork(int t) const
 {
+  // The kept quality clears most tets without their points: a hair above the target, it cannot
+  // be a rounding away from the measure below.
+  if (!this->Parameters.coarsen && this->Qualities[t] > this->TargetCubed * (1 + 1e-9))
+  {
+    return false;
+  }
   const Corners& c = this->Tets[t];
   if (this->Parameters.improve &&
     meanRatioBelow(this->at(c[0]), this->at(c[1]), this->at(c[2]), this->at(c[3]),

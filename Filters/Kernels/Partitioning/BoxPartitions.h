@@ -44,10 +44,11 @@ BoxLayout layBoxes(const std::vector<double>& coordinates, int cells, double shi
 
 // Moves the tets of `partitions` into the boxes of `layout` (`boxes`), each into the box of its
 // centroid. With `movingIfFlagged`, only the tets that touch a flagged point move, and the others
-// stay in their partition, in order (nothing is allocated for them); without it every tet moves
-// and the partitions are emptied. With `boxOfFlaggedPoint` as well (an entry per flagged point),
-// a moving tet goes into the box its first flagged corner names instead: tets that must stay
-// together go into one box.
+// stay in their partition (nothing is allocated for them): in order, but for those past the
+// partition's new end, which fill the places the moving ones left, in order. Without it every
+// tet moves and the partitions are emptied. With `boxOfFlaggedPoint` as well (an entry per flagged
+// point), a moving tet goes into the box its first flagged corner names instead: tets that must
+// stay together go into one box.
 Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   const std::vector<double>& coordinates, const BoxLayout& layout, const ParallelFor& parallelFor,
   std::vector<PartitionMesh>& boxes, const std::vector<char>* movingIfFlagged = nullptr,
