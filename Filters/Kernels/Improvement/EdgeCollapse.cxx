@@ -237,7 +237,8 @@ bool Improver::collapseVertex(int a)
     return false;
   }
   sortUnique(candidates); // shortest first, ties by vertex: deterministic
-  const std::vector<int> ball = this->Incident[a];
+  const IncidenceLists::List around = this->Incident[a];
+  const std::vector<int> ball(around.begin(), around.end()); // a copy: the collapse changes it
   double worstBefore = std::numeric_limits<double>::max();
   std::vector<Corners> replaced;
   for (int t : ball)

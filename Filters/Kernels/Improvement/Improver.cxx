@@ -25,7 +25,7 @@ double Improver::totalVolume(const std::vector<Corners>& tets) const
   return total;
 }
 
-double Improver::largestVolume(const std::vector<int>& tets) const
+double Improver::largestVolume(IncidenceLists::List tets) const
 {
   double largest = 0;
   for (int t : tets)
@@ -57,9 +57,9 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
   : Partition(partition)
   , Points(points)
 {
-  // Local numbers first, so that each vertex's incidence list is allocated once at its size
-  // (with room for what the operations add): growing them one tet at a time was a fifth of
-  // building the improver.
+  // Local numbers first, so that each vertex's incidence list is laid out once at its size (with
+  // room for what the operations add): growing them one tet at a time was a fifth of building
+  // the improver.
   const std::size_t tetCount = partition.tets.size();
   std::vector<Corners> local(tetCount);
   this->LocalOf.reserve(tetCount / 4 + 16);
@@ -81,10 +81,7 @@ Improver::Improver(PartitionMesh& partition, const PartitionPoints& points)
       ++tetsAt[v];
     }
   }
-  for (std::size_t v = 0; v < tetsAt.size(); ++v)
-  {
-    this->Incident[v].reserve(tetsAt[v] + 8);
-  }
+  this->Incident.reserve(tetsAt, 8);
   this->Tets.reserve(tetCount);
   this->Regions.reserve(tetCount);
   this->Parents.reserve(tetCount);
@@ -204,7 +201,7 @@ void Improver::nextLinkStamp()
 // size field, 59% of the vertices asked about are fixed, most of them on partition faces.
 bool Improver::mayBeFree(int v)
 {
-  const std::vector<int>& ball = this->Incident[v];
+  const IncidenceLists::List ball = this->Incident[v];
   if (ball.empty() || ball.size() % 2 != 0)
   {
     return false;
@@ -242,7 +239,6 @@ int Improver::localVertex(PointId id)
   this->IdOf.push_back(id);
   this->Position.push_back(this->Points.at(id));
   this->Size.push_back(this->Points.sizeAt(id));
-  this->Incident.emplace_back();
   return next;
 }
 
@@ -256,7 +252,7 @@ void Improver::addTet(const Corners& corners, int region, CellId parent)
   this->Alive.push_back(1);
   for (int v : corners)
   {
-    this->Incident[v].push_back(t);
+    this->Incident.add(v, t);
     if (!this->LastChange.empty()) // built: the constructor's tets are no change
     {
       this->noteChangeAt(v);
@@ -270,8 +266,7 @@ void Improver::killTet(int t)
   for (int v : this->Tets[t])
   {
     this->noteChangeAt(v);
-    auto& list = this->Incident[v];
-    list.erase(std::remove(list.begin(), list.end(), t), list.end());
+    this->Incident.remove(v, t);
   }
 }
 

@@ -9,6 +9,7 @@
 #include "Core/EdgeSplits.h"
 #include "Core/Geometry.h"
 #include "Core/TetQuality.h"
+#include "Improvement/IncidenceLists.h"
 #include "Improvement/QualityImprover.h"
 
 #include <array>
@@ -69,7 +70,7 @@ private:
 
   bool removeEdge(int a, int b);
   bool withinVolumeBound(const std::vector<Corners>& created, double largestReplaced) const;
-  double largestVolume(const std::vector<int>& tets) const;
+  double largestVolume(IncidenceLists::List tets) const;
   bool orderedRing(int a, int b, const std::vector<int>& around, std::vector<int>& ring) const;
   double triangleQuality(int p, int q, int r, int a, int b, double side) const;
   double bestRingTriangulation(
@@ -112,7 +113,7 @@ private:
   std::vector<CellId> Parents;
   std::vector<double> Qualities; // cubed mean ratio of each tet, kept current
   std::vector<char> Alive;
-  std::vector<std::vector<int>> Incident; // alive tets at each vertex (killTet removes)
+  IncidenceLists Incident; // alive tets at each vertex (killTet removes)
   enum Fixity : char
   {
     Unknown,

@@ -306,7 +306,7 @@ bool Improver::swapFace(int t, int skip)
 // worst tet around it; otherwise leaves it.
 bool Improver::smoothVertex(int v)
 {
-  const std::vector<int>& star = this->Incident[v]; // smoothing changes no incidence
+  const IncidenceLists::List star = this->Incident[v]; // smoothing changes no incidence
   if (star.empty())
   {
     return false;
