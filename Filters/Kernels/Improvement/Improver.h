@@ -123,6 +123,9 @@ private:
   std::vector<char> Fixedness; // a Fixity per vertex, found when first asked (isFixed)
   std::vector<char> Moved;
   std::vector<char> SmoothingCandidate; // scratch of smoothVerticesOfPoorTets
+  // Scratch of smoothVertex, kept for their memory: the vertex's neighbours and its tets.
+  std::vector<int> SmoothingNeighbours;
+  std::vector<Corners> SmoothingStar;
   // A failed collapse of a is a function of a's ball: its tets, their corners' positions and the
   // incidence of those corners (the link condition). Every change stamps the vertices it touches
   // with the clock, so a vertex whose ball holds no stamp newer than its failure would fail again

@@ -326,7 +326,8 @@ bool Improver::smoothVertex(int v)
   }
   double centre[3] = { 0, 0, 0 };
   int neighbours = 0;
-  std::vector<int> seen;
+  std::vector<int>& seen = this->SmoothingNeighbours;
+  seen.clear();
   for (int t : star)
   {
     for (int w : this->Tets[t])
@@ -343,6 +344,12 @@ bool Improver::smoothVertex(int v)
     }
   }
   const double largestBefore = this->largestVolume(star);
+  std::vector<Corners>& moved = this->SmoothingStar; // the star's tets, for the volume bound
+  moved.clear();
+  for (int t : star)
+  {
+    moved.push_back(this->Tets[t]);
+  }
   double* position = this->Position[v];
   const double original[3] = { position[0], position[1], position[2] };
   for (double step : { 1.0, 0.5 })
@@ -355,11 +362,6 @@ bool Improver::smoothVertex(int v)
     for (int t : star)
     {
       after = std::min(after, this->quality(this->Tets[t]));
-    }
-    std::vector<Corners> moved;
-    for (int t : star)
-    {
-      moved.push_back(this->Tets[t]);
     }
     if (after > 0 && improves(after, before) && this->withinVolumeBound(moved, largestBefore) &&
       !this->longerThanSizeAt(v, seen.data(), seen.size()))
