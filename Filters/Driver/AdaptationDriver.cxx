@@ -418,9 +418,10 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   MergedMesh merged;
   if (status.ok())
   {
-    status = mergePartitions(state.partitions, state.coordinates, state.inputPointCount,
-      state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints },
-      options.pointProvenance, summary.plan.sizeField ? &state.sizes : nullptr,
+    status = mergePartitions(state.partitions, std::move(state.coordinates),
+      state.inputPointCount, state.newPointSources, merged,
+      RelocationInput{ &input, &state.movedPoints }, options.pointProvenance,
+      summary.plan.sizeField ? std::move(state.sizes) : std::vector<double>(),
       parallelForOn(summary.plan.threads));
   }
   if (!status.ok())

@@ -47,16 +47,17 @@ struct RelocationInput
 };
 
 // `withProvenance` false leaves merged.provenance empty (nothing to interpolate); then
-// `newPointSources` is not read and may be empty. `pointSizes`
-// (one size per global point) gives merged.mesh.sizes. `parallelFor` runs the marking and
-// numbering of the used points and the copies of points and tets; the output does not depend on
-// it. The provenance expansion is serial: it is only built when there is point data to carry.
-
+// `newPointSources` is not read and may be empty. `pointSizes` (one size per global point, or
+// empty) gives merged.mesh.sizes. `coordinates` and `pointSizes` are taken: when every point is
+// used, as after any refinement that removed none, they become the merged mesh's own arrays
+// without a copy. `parallelFor` runs the marking and numbering of the used points and the copies
+// of points and tets; the output does not depend on it. The provenance expansion is serial: it is
+// only built when there is point data to carry.
 Status mergePartitions(const std::vector<PartitionMesh>& partitions,
-  const std::vector<double>& coordinates, PointId inputPointCount,
+  std::vector<double> coordinates, PointId inputPointCount,
   const std::vector<PointSource>& newPointSources, MergedMesh& merged,
   const RelocationInput& relocation = RelocationInput(), bool withProvenance = true,
-  const std::vector<double>* pointSizes = nullptr,
+  std::vector<double> pointSizes = std::vector<double>(),
   const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 } // namespace cgmesh
