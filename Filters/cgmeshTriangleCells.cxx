@@ -11,6 +11,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <cstddef>
+#include <cstring>
 #include <string>
 
 namespace cgmesh
@@ -33,14 +35,8 @@ std::string describeTriangle(const TriangleCells& cells, std::size_t index)
 bool hasTriangles(vtkUnstructuredGrid* grid)
 {
   const unsigned char* types = cellTypesOf(grid);
-  for (vtkIdType cellId = 0; cellId < grid->GetNumberOfCells(); ++cellId)
-  {
-    if (types[cellId] == VTK_TRIANGLE)
-    {
-      return true;
-    }
-  }
-  return false;
+  return types &&
+    std::memchr(types, VTK_TRIANGLE, static_cast<std::size_t>(grid->GetNumberOfCells())) != nullptr;
 }
 
 void separateTriangles(vtkUnstructuredGrid* grid, vtkUnstructuredGrid* tets, TriangleCells& cells)
