@@ -280,7 +280,8 @@ void test_bad_delaunay_options_are_refused()
 }
 
 // TetGen's reply is checked, not trusted: face neighbours that do not name each other back, or
-// an interior face reported as hull, send the partition to the template fallback with the reason.
+// an interior face reported as hull, send the partition to the next attempt and, when every
+// attempt fails, to the template fallback with the reason.
 void test_tampered_tetgen_output_is_refused()
 {
   TetMesh mesh;
@@ -369,7 +370,25 @@ void test_tampered_tetgen_output_is_refused()
     });
   CHECK(opened.fellBack);
   CHECK(opened.reason.find("changed the partition boundary") != std::string::npos);
-  CHECK_EQUAL(calls.size(), std::size_t(4));
+  // Refined in three orders, then without q, then meshed anew from its kept faces and points.
+  CHECK_EQUAL(calls.size(), std::size_t(5));
+  CHECK(calls.size() == 5 && calls[4].rfind('p', 0) == 0 && calls[4].find('q') != std::string::npos);
+
+  // Refinement fails in every order and without q (as TetGen's cluster of points a rounding
+  // apart on non-Delaunay tets does); meshed anew, the partition is TetGen's after all.
+  const DelaunayOutcome refinedAnew = refineWith(
+    [&](const std::string& switches, tetgenio& out)
+    {
+      if (switches.rfind('r', 0) == 0)
+      {
+        openFace(out);
+      }
+      return std::string();
+    });
+  CHECK(!refinedAnew.fellBack);
+  CHECK(refinedAnew.retried && refinedAnew.remeshed && !refinedAnew.withoutQualityBound);
+  CHECK(refinedAnew.tetgenPoints > 0);
+  CHECK_EQUAL(calls.size(), std::size_t(5));
 
   // Flips under the radius-edge bound only (what sliver-laden partitions show): three attempts
   // with q fail, the fourth, without q, refines the partition.
