@@ -29,6 +29,7 @@
 #include <cstdlib>
 #include <map>
 #include <numeric>
+#include <random>
 #include <vector>
 
 using namespace cgmesh;
@@ -69,6 +70,74 @@ void test_flat_and_hierarchical()
     options.contiguous = false;
     CHECK(partitionMesh(mesh, partitions, loose, options).ok());
     checkCovers(loose, partitions);
+  }
+}
+
+// Skilling's transpose algorithm level by level with masks, as hilbertIndex() computed it before
+// it became a table-driven state machine: the reference the tables must match bit for bit (every
+// Hilbert partition and tet order depends on it).
+std::uint64_t skillingHilbertIndex(std::array<std::uint32_t, 3> cell, int bits)
+{
+  const std::uint32_t top = 1u << (bits - 1);
+  for (std::uint32_t level = top; level > 1; level >>= 1)
+  {
+    const std::uint32_t lower = level - 1;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const std::uint32_t set = 0u - ((cell[axis] & level) != 0 ? 1u : 0u);
+      const std::uint32_t swapped = (cell[0] ^ cell[axis]) & lower & ~set;
+      cell[0] ^= (lower & set) | swapped;
+      cell[axis] ^= swapped;
+    }
+  }
+  cell[1] ^= cell[0];
+  cell[2] ^= cell[1];
+  std::uint32_t flip = 0;
+  for (std::uint32_t level = top; level > 1; level >>= 1)
+  {
+    flip ^= (level - 1) & (0u - ((cell[2] & level) != 0 ? 1u : 0u));
+  }
+  std::uint64_t index = 0;
+  for (int level = bits - 1; level >= 0; --level)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      index = index << 1 | (((cell[axis] ^ flip) >> level) & 1u);
+    }
+  }
+  return index;
+}
+
+void test_hilbert_index_matches_the_reference()
+{
+  for (int bits = 1; bits <= 5; ++bits)
+  {
+    const std::uint32_t side = 1u << bits;
+    int mismatches = 0;
+    for (std::uint32_t x = 0; x < side; ++x)
+    {
+      for (std::uint32_t y = 0; y < side; ++y)
+      {
+        for (std::uint32_t z = 0; z < side; ++z)
+        {
+          mismatches += hilbertIndex({ x, y, z }, bits) != skillingHilbertIndex({ x, y, z }, bits);
+        }
+      }
+    }
+    CHECK_EQUAL(mismatches, 0);
+  }
+  std::mt19937_64 random(12345);
+  for (int bits = 6; bits <= 21; ++bits)
+  {
+    int mismatches = 0;
+    for (int k = 0; k < 20000; ++k)
+    {
+      const std::array<std::uint32_t, 3> cell = { static_cast<std::uint32_t>(random()) >> (32 - bits),
+        static_cast<std::uint32_t>(random()) >> (32 - bits),
+        static_cast<std::uint32_t>(random()) >> (32 - bits) };
+      mismatches += hilbertIndex(cell, bits) != skillingHilbertIndex(cell, bits);
+    }
+    CHECK_EQUAL(mismatches, 0);
   }
 }
 
@@ -669,6 +738,7 @@ void test_distinct_faces_match_a_map()
 int main()
 {
   test_flat_and_hierarchical();
+  test_hilbert_index_matches_the_reference();
   test_hilbert_curve_visits_every_cell_through_faces();
   test_tets_along_hilbert_curve_stay_close();
   test_parallel_sort_matches_sort();
