@@ -257,6 +257,33 @@ void test_parallel_sort_matches_sort()
       std::vector<std::pair<std::uint64_t, CellId>> sorted = keys;
       CHECK(sortInParallel(sorted, parallelFor).ok());
       CHECK(sorted == expected);
+      sorted = keys;
+      CHECK(sortKeyedInParallel(sorted, parallelFor).ok());
+      CHECK(sorted == expected);
+    }
+  }
+  // The bucket sort's buckets span the keys present: full 64-bit keys, keys crowded into a few
+  // buckets (one far out), and one key for every pair.
+  for (const int kind : { 0, 1, 2 })
+  {
+    const std::int64_t count = 300007;
+    std::vector<std::pair<std::uint64_t, CellId>> keys(count);
+    std::uint64_t state = 99;
+    for (std::int64_t i = 0; i < count; ++i)
+    {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      const std::uint64_t key = kind == 0 ? state
+        : kind == 1                       ? (i == 17 ? ~0ULL : (state >> 60) + 1000)
+                                          : 42;
+      keys[count - 1 - i] = { key, i };
+    }
+    std::vector<std::pair<std::uint64_t, CellId>> expected = keys;
+    std::sort(expected.begin(), expected.end());
+    for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
+    {
+      std::vector<std::pair<std::uint64_t, CellId>> sorted = keys;
+      CHECK(sortKeyedInParallel(sorted, parallelFor).ok());
+      CHECK(sorted == expected);
     }
   }
 }

@@ -82,7 +82,7 @@ Status orderTetsAlongHilbertCurve(
   }
   if (status.ok())
   {
-    status = sortInParallel(keyed, parallelFor);
+    status = sortKeyedInParallel(keyed, parallelFor);
   }
   if (!status.ok())
   {
