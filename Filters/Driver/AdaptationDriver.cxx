@@ -418,9 +418,9 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   MergedMesh merged;
   if (status.ok())
   {
-    status = mergePartitions(state.partitions, std::move(state.coordinates),
-      state.inputPointCount, state.newPointSources, merged,
-      RelocationInput{ &input, &state.movedPoints }, options.pointProvenance,
+    status = mergePartitions(state.partitions, std::move(state.coordinates), state.inputPointCount,
+      state.newPointSources, merged, RelocationInput{ &input, &state.movedPoints },
+      options.pointProvenance,
       summary.plan.sizeField ? std::move(state.sizes) : std::vector<double>(),
       parallelForOn(summary.plan.threads));
   }

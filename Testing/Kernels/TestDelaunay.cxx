@@ -372,7 +372,8 @@ void test_tampered_tetgen_output_is_refused()
   CHECK(opened.reason.find("changed the partition boundary") != std::string::npos);
   // Refined in three orders, then without q, then meshed anew from its kept faces and points.
   CHECK_EQUAL(calls.size(), std::size_t(5));
-  CHECK(calls.size() == 5 && calls[4].rfind('p', 0) == 0 && calls[4].find('q') != std::string::npos);
+  CHECK(
+    calls.size() == 5 && calls[4].rfind('p', 0) == 0 && calls[4].find('q') != std::string::npos);
 
   // Refinement fails in every order and without q (as TetGen's cluster of points a rounding
   // apart on non-Delaunay tets does); meshed anew, the partition is TetGen's after all.

@@ -132,7 +132,8 @@ void test_hilbert_index_matches_the_reference()
     int mismatches = 0;
     for (int k = 0; k < 20000; ++k)
     {
-      const std::array<std::uint32_t, 3> cell = { static_cast<std::uint32_t>(random()) >> (32 - bits),
+      const std::array<std::uint32_t, 3> cell = { static_cast<std::uint32_t>(random()) >>
+          (32 - bits),
         static_cast<std::uint32_t>(random()) >> (32 - bits),
         static_cast<std::uint32_t>(random()) >> (32 - bits) };
       mismatches += hilbertIndex(cell, bits) != skillingHilbertIndex(cell, bits);
@@ -237,8 +238,25 @@ Status runBackwards(std::int64_t count, const std::function<void(std::int64_t)>&
   return Status::success();
 }
 
-// Sorted in ranges and merged, under either schedule, the keys come out as std::sort orders them:
-// counts below, at and above the ranged sort's threshold, and uneven last ranges.
+// Both parallel sorts of `keys`, serially and backwards, give std::sort's order.
+void checkParallelSortsMatchSort(const std::vector<std::pair<std::uint64_t, CellId>>& keys)
+{
+  std::vector<std::pair<std::uint64_t, CellId>> expected = keys;
+  std::sort(expected.begin(), expected.end());
+  for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
+  {
+    std::vector<std::pair<std::uint64_t, CellId>> sorted = keys;
+    CHECK(sortInParallel(sorted, parallelFor).ok());
+    CHECK(sorted == expected);
+    sorted = keys;
+    CHECK(sortKeyedInParallel(sorted, parallelFor).ok());
+    CHECK(sorted == expected);
+  }
+}
+
+// Sorted in ranges and merged, or by buckets, under either schedule, the keys come out as
+// std::sort orders them: counts below, at and above the ranged sort's threshold, and uneven last
+// ranges.
 void test_parallel_sort_matches_sort()
 {
   for (const std::int64_t count : { 0L, 1000L, 131072L, 131073L, 400003L })
@@ -250,17 +268,7 @@ void test_parallel_sort_matches_sort()
       state = state * 6364136223846793005ULL + 1442695040888963407ULL;
       keys[i] = { state >> 44, i }; // 20-bit keys: many repeat, ties broken by the id
     }
-    std::vector<std::pair<std::uint64_t, CellId>> expected = keys;
-    std::sort(expected.begin(), expected.end());
-    for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
-    {
-      std::vector<std::pair<std::uint64_t, CellId>> sorted = keys;
-      CHECK(sortInParallel(sorted, parallelFor).ok());
-      CHECK(sorted == expected);
-      sorted = keys;
-      CHECK(sortKeyedInParallel(sorted, parallelFor).ok());
-      CHECK(sorted == expected);
-    }
+    checkParallelSortsMatchSort(keys);
   }
   // The bucket sort's buckets span the keys present: full 64-bit keys, keys crowded into a few
   // buckets (one far out), and one key for every pair.
@@ -277,14 +285,7 @@ void test_parallel_sort_matches_sort()
                                           : 42;
       keys[count - 1 - i] = { key, i };
     }
-    std::vector<std::pair<std::uint64_t, CellId>> expected = keys;
-    std::sort(expected.begin(), expected.end());
-    for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
-    {
-      std::vector<std::pair<std::uint64_t, CellId>> sorted = keys;
-      CHECK(sortKeyedInParallel(sorted, parallelFor).ok());
-      CHECK(sorted == expected);
-    }
+    checkParallelSortsMatchSort(keys);
   }
 }
 

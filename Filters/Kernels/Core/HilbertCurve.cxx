@@ -74,9 +74,8 @@ HilbertLevel hilbertStep(int state, int bits)
   }
   const int permutationIndex = static_cast<int>(
     std::find(Permutations.begin(), Permutations.end(), permutation) - Permutations.begin());
-  const int next =
-    (permutationIndex << 4) | ((inverted[0] | inverted[1] << 1 | inverted[2] << 2) << 1) |
-    (parity ^ gray2);
+  const int next = (permutationIndex << 4) |
+    ((inverted[0] | inverted[1] << 1 | inverted[2] << 2) << 1) | (parity ^ gray2);
   return { static_cast<std::uint8_t>(digit), static_cast<std::uint8_t>(next) };
 }
 

@@ -66,7 +66,8 @@ Status sortKeyedInParallel(
   }
   const std::int64_t rangeSize = IndicesPerCopyRange / 4;
   const std::int64_t ranges = (count + rangeSize - 1) / rangeSize;
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> boundsOfRange(static_cast<std::size_t>(ranges));
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> boundsOfRange(
+    static_cast<std::size_t>(ranges));
   Status status = forEachRange(parallelFor, count, rangeSize,
     [&](std::int64_t begin, std::int64_t end)
     {
