@@ -430,30 +430,64 @@ void test_box_regrouping_keeps_every_tet_in_serial_order()
   }
 }
 
-// The way back from boxes: every tet to the partition of its input cell, in the order a serial
-// pass appends them, for any schedule. 24^3 * 6 tets in 29 boxes make more than one range of
-// tets, and ranges that start inside a box and run across several.
+// The way back from boxes: every tet to the partition of its input cell, for any schedule. The
+// first source whose tets all go to one partition becomes it as it is (as the partitions a sweep
+// left do), and the other tets follow in the order a serial pass appends them. 24^3 * 6 tets in
+// 29 boxes make more than one range of tets, and ranges that start inside a box and run across
+// several; three whole sources are added, two of them for one partition.
 void test_regrouping_by_cell_partition_keeps_serial_order()
 {
   TetMesh mesh;
-  const std::vector<PartitionMesh> boxes = jitteredCubePartitions(24, 29, mesh);
+  std::vector<PartitionMesh> sources = jitteredCubePartitions(24, 29, mesh);
   const int partitions = 13;
   std::vector<int> partitionOfCell(mesh.tets.size());
   for (std::size_t t = 0; t < partitionOfCell.size(); ++t)
   {
     partitionOfCell[t] = static_cast<int>((t * 7919 + t / 5000) % partitions);
   }
-  std::vector<PartitionMesh> expected(partitions);
-  for (const PartitionMesh& box : boxes)
+  // Whole sources: the tets of box 0 bound for partition 4 (twice, the second a mixed source's
+  // share as well) and those of box 1 bound for partition 7, each put in a source of its own.
+  const auto wholeSource = [&](std::size_t box, int to)
   {
-    for (std::size_t t = 0; t < box.tets.size(); ++t)
+    PartitionMesh whole;
+    for (std::size_t t = 0; t < sources[box].tets.size(); ++t)
     {
-      appendTetOf(box, t, expected[partitionOfCell[box.parentCells[t]]]);
+      if (partitionOfCell[sources[box].parentCells[t]] == to)
+      {
+        appendTetOf(sources[box], t, whole);
+      }
+    }
+    return whole;
+  };
+  sources.insert(sources.begin() + 3, wholeSource(0, 4));
+  sources.push_back(wholeSource(1, 7));
+  sources.push_back(wholeSource(0, 4));
+  std::vector<PartitionMesh> expected(partitions);
+  std::vector<char> taken(partitions, 0);
+  std::vector<char> takenWhole(sources.size(), 0);
+  for (std::size_t s = 0; s < sources.size(); ++s)
+  {
+    const int to = partitionOfCell[sources[s].parentCells.front()];
+    const bool whole = std::all_of(sources[s].parentCells.begin(), sources[s].parentCells.end(),
+      [&](CellId parent) { return partitionOfCell[parent] == to; });
+    if (whole && !taken[to])
+    {
+      taken[to] = 1;
+      takenWhole[s] = 1;
+      expected[to] = sources[s];
+    }
+  }
+  CHECK_EQUAL(std::count(takenWhole.begin(), takenWhole.end(), 1), 2);
+  for (std::size_t s = 0; s < sources.size(); ++s)
+  {
+    for (std::size_t t = 0; t < sources[s].tets.size() && !takenWhole[s]; ++t)
+    {
+      appendTetOf(sources[s], t, expected[partitionOfCell[sources[s].parentCells[t]]]);
     }
   }
   for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
   {
-    std::vector<PartitionMesh> from = boxes, regrouped;
+    std::vector<PartitionMesh> from = sources, regrouped;
     CHECK(regroupByCellPartition(from, partitionOfCell, partitions, parallelFor, regrouped).ok());
     CHECK_EQUAL(regrouped.size(), expected.size());
     for (std::size_t p = 0; p < std::min(regrouped.size(), expected.size()); ++p)

@@ -581,8 +581,9 @@ private:
 };
 
 // Moves the tets with a vertex of work out of `partition` (returned, in their order) and keeps
-// the others in place, in theirs. Every operation stays inside the tets returned (the balls of
-// the vertices of work, the rings of their edges, the face neighbours of poor tets). Template
+// the others (removeTetsAt: compacting them in order cost the FinFET's refinement-loop
+// improvement 0.037 s at one thread). Every operation stays inside the tets returned (the balls
+// of the vertices of work, the rings of their edges, the face neighbours of poor tets). Template
 // children of good parents are good, so on refined meshes this is a part of the partition, and
 // building the improver's structures for it alone saves most of their cost.
 PartitionMesh extractNeighbourhood(PartitionMesh& partition, const PointIdSet& vertices)
@@ -593,33 +594,24 @@ PartitionMesh extractNeighbourhood(PartitionMesh& partition, const PointIdSet& v
     return filter.mayContain(p) && vertices.contains(p);
   };
   PartitionMesh chosen;
-  const bool hasRegions = !partition.regions.empty();
   // Room for the usual neighbourhood (6 to 11 tets per vertex of work on the FinFET, before and
   // after refinement), so that the chosen tets' arrays seldom grow.
   const std::size_t expected = std::min(partition.tets.size(), 12 * vertices.size());
   chosen.tets.reserve(expected);
   chosen.parentCells.reserve(expected);
-  chosen.regions.reserve(hasRegions ? expected : 0);
-  std::size_t kept = 0;
+  chosen.regions.reserve(partition.regions.empty() ? 0 : expected);
+  std::vector<std::size_t> leaving;
+  leaving.reserve(expected);
   for (std::size_t t = 0; t < partition.tets.size(); ++t)
   {
     const Tet& tet = partition.tets[t];
     if (std::any_of(tet.begin(), tet.end(), isVertexOfWork))
     {
       appendTetOf(partition, t, chosen);
-      continue;
+      leaving.push_back(t);
     }
-    partition.tets[kept] = tet; // kept <= t: nothing unread is overwritten
-    partition.parentCells[kept] = partition.parentCells[t];
-    if (hasRegions)
-    {
-      partition.regions[kept] = partition.regions[t];
-    }
-    ++kept;
   }
-  partition.tets.resize(kept);
-  partition.parentCells.resize(kept);
-  partition.regions.resize(hasRegions ? kept : 0);
+  removeTetsAt(partition, leaving);
   return chosen;
 }
 

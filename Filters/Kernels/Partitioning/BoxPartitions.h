@@ -54,9 +54,11 @@ Status regroupIntoBoxes(std::vector<PartitionMesh>& partitions,
   std::vector<PartitionMesh>& boxes, const std::vector<char>* movingIfFlagged = nullptr,
   const std::vector<std::size_t>* boxOfFlaggedPoint = nullptr);
 
-// Moves every tet of `partitions` into `regrouped[partitionOfCell[parentCell]]`, in (source
-// partition, tet) order as a serial pass would append them, and empties `partitions`: the way
-// back from boxes to the partitions of the input cells. Counted and copied by ranges of the tets.
+// Moves every tet of `partitions` into `regrouped[partitionOfCell[parentCell]]` and empties
+// `partitions`: the way back from boxes to the partitions of the input cells. The first source
+// partition whose tets all go to one destination becomes that destination as it is; the other
+// tets follow in (source partition, tet) order, as a serial pass would append them, counted and
+// copied by ranges of the tets.
 Status regroupByCellPartition(std::vector<PartitionMesh>& partitions,
   const std::vector<int>& partitionOfCell, int numberOfPartitions, const ParallelFor& parallelFor,
   std::vector<PartitionMesh>& regrouped);
