@@ -409,11 +409,16 @@ void test_tampered_tetgen_output_is_refused()
   CHECK(calls.size() == 4 && calls[3].find('q') == std::string::npos &&
     calls[3].find('a') != std::string::npos);
 
-  // A call that adds more than half its cap in points (TetGen inserting one circumcentre again
-  // and again) ends the attempts at once.
+  // A refining call that adds more than half its cap in points (TetGen inserting one
+  // circumcentre again and again into tets that are not Delaunay) ends the refining attempts;
+  // the partition is meshed anew at once, and is TetGen's.
   const DelaunayOutcome runaway = refineWith(
-    [&](const std::string&, tetgenio& out)
+    [&](const std::string& switches, tetgenio& out)
     {
+      if (switches.rfind('r', 0) != 0)
+      {
+        return std::string();
+      }
       const int added = static_cast<int>(steinerCap / 2) + 1;
       REAL* points = new REAL[3 * (out.numberofpoints + added)];
       std::copy(out.pointlist, out.pointlist + 3 * out.numberofpoints, points);
@@ -426,9 +431,25 @@ void test_tampered_tetgen_output_is_refused()
       out.numberofpoints += added;
       return std::string();
     });
-  CHECK(runaway.fellBack);
-  CHECK(runaway.reason.rfind(TetGenRunawayReason, 0) == 0);
-  CHECK_EQUAL(calls.size(), std::size_t(1));
+  CHECK(!runaway.fellBack);
+  CHECK(runaway.retried && runaway.remeshed && runaway.tetgenPoints > 0);
+  CHECK_EQUAL(calls.size(), std::size_t(2));
+  CHECK(calls.size() == 2 && calls[0].rfind('r', 0) == 0 && calls[1].rfind('p', 0) == 0);
+
+  // Where meshing anew fails as well, the partition falls back with that call's reason.
+  const DelaunayOutcome runawayThenOpen = refineWith(
+    [&](const std::string& switches, tetgenio& out)
+    {
+      if (switches.rfind('r', 0) == 0)
+      {
+        return std::string(TetGenRunawayReason) + " (as above)";
+      }
+      openFace(out);
+      return std::string();
+    });
+  CHECK(runawayThenOpen.fellBack);
+  CHECK(runawayThenOpen.reason.find("changed the partition boundary") != std::string::npos);
+  CHECK_EQUAL(calls.size(), std::size_t(2));
 
   // A call stopped at the time limit ends the attempts at once.
   const DelaunayOutcome timedOut = refineWith([](const std::string&, tetgenio&)

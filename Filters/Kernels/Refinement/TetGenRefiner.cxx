@@ -106,16 +106,22 @@ struct TetGenAttempt
 };
 
 // Runs the attempts in turn until one gives a valid mesh, which the partition adopts; returns
-// the last failure, empty on success. A call stopped at the time limit or at its cap on added
-// points while refining (switch r) ends the attempts.
+// the last failure, empty on success. A call stopped at the time limit while refining (switch r)
+// ends the attempts; one stopped at its cap on added points ends the refining ones, and the
+// partition goes on to being meshed anew, where that is an attempt.
 std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMesh& partition,
   const std::vector<Face>& keptFaces, const RefinementContext& context,
   const DelaunayParameters& parameters, PointId firstDroppablePoint, const TetGenRunner& runTetGen,
   PartitionRefinement& refinement, DelaunayOutcome& outcome)
 {
   std::string failure;
+  bool refiningStopped = false;
   for (const TetGenAttempt& attempt : attempts)
   {
+    if (refiningStopped && attempt.input == TetGenInput::Tets)
+    {
+      continue;
+    }
     TetGenSession session(partition, context, refinement);
     tetgenio in, out;
     session.prepareInput(in, keptFaces, attempt.order, attempt.input, firstDroppablePoint);
@@ -163,11 +169,15 @@ std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMes
       return failure;
     }
     outcome.retried = true;
-    if (!remesh &&
-      (failure.rfind(TetGenTimeLimitReason, 0) == 0 || failure.rfind(TetGenRunawayReason, 0) == 0))
+    if (!remesh && failure.rfind(TetGenTimeLimitReason, 0) == 0)
     {
       break; // the same in every order and without q: the partition falls back
     }
+    // A runaway repeats one insertion into tets that are not Delaunay, in every order and
+    // without q alike; meshed anew from the kept faces and all the points they are Delaunay
+    // again. The study's greedy-coloured Delaunay cubes (1,024 partitions, two passes) lost two
+    // partitions each to templates that way.
+    refiningStopped = refiningStopped || (!remesh && failure.rfind(TetGenRunawayReason, 0) == 0);
   }
   return failure;
 }
