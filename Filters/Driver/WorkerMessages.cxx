@@ -148,16 +148,28 @@ bool receiveMesh(int socket, tetgenio& io)
 bool sendGraph(int socket, const DualGraph& graph)
 {
   return sendArray(socket, graph.offsets.data(), static_cast<std::int64_t>(graph.offsets.size())) &&
-    sendArray(socket, graph.neighbours.data(), static_cast<std::int64_t>(graph.neighbours.size()));
+    sendArray(
+      socket, graph.neighbours.data(), static_cast<std::int64_t>(graph.neighbours.size())) &&
+    sendArray(
+      socket, graph.vertexWeights.data(), static_cast<std::int64_t>(graph.vertexWeights.size()));
 }
 
 bool receiveGraph(int socket, DualGraph& graph)
 {
   if (!receiveArray(socket, graph.offsets) || !receiveArray(socket, graph.neighbours) ||
-    graph.offsets.empty() || graph.offsets.front() != 0 ||
-    graph.offsets.back() != static_cast<std::int64_t>(graph.neighbours.size()))
+    !receiveArray(socket, graph.vertexWeights) || graph.offsets.empty() ||
+    graph.offsets.front() != 0 ||
+    graph.offsets.back() != static_cast<std::int64_t>(graph.neighbours.size()) ||
+    (!graph.vertexWeights.empty() && graph.vertexWeights.size() + 1 != graph.offsets.size()))
   {
     return false;
+  }
+  for (std::int64_t weight : graph.vertexWeights)
+  {
+    if (weight < 1)
+    {
+      return false;
+    }
   }
   for (std::size_t v = 0; v + 1 < graph.offsets.size(); ++v)
   {

@@ -797,6 +797,126 @@ void test_distinct_faces_match_a_map()
   }
 }
 
+// Partitions balanced by tet weights (TetWeights): the runs along the curve hold equal weight up
+// to one tet's, every run at least its least tets even when one tet outweighs many runs; the
+// Hilbert, curve-chunk (in worker processes) and METIS partitioners balance the weight, not the
+// count, and the weights reach METIS through the workers.
+void test_weighted_partitions_balance_weight()
+{
+  // The runs along an order: equal weight but for one tet's, a heavy tet alone in its run.
+  std::vector<CellId> order(1000);
+  std::iota(order.begin(), order.end(), 0);
+  TetWeights weights(1000, 1);
+  std::fill(weights.begin() + 800, weights.end(), 50); // 200 heavy tets: 10,000 of 10,800
+  std::vector<CellId> start = weightedRunStarts(order, weights, std::vector<CellId>(8, 1));
+  CHECK_EQUAL(start.size(), std::size_t(9));
+  for (int r = 0; r < 8 && start.size() == 9; ++r)
+  {
+    const std::int64_t weight = std::accumulate(
+      weights.begin() + start[r], weights.begin() + start[r + 1], std::int64_t{ 0 });
+    CHECK(start[r + 1] > start[r]);
+    CHECK(std::abs(weight - 10800 / 8) <= 50);
+  }
+  const std::vector<CellId> ten(order.begin(), order.begin() + 10);
+  weights.assign(10, 1);
+  weights[3] = 1000;
+  start = weightedRunStarts(ten, weights, std::vector<CellId>(5, 1));
+  for (std::size_t r = 0; r + 1 < start.size(); ++r)
+  {
+    CHECK(start[r + 1] > start[r]); // every run holds a tet
+  }
+  start = weightedRunStarts(ten, weights, std::vector<CellId>{ 2, 3, 5 });
+  CHECK(start == (std::vector<CellId>{ 0, 2, 5, 10 }));
+
+  // The partitioners: tets with a centroid under x = 0.3 of the extent weigh 40 times the others.
+  TetMesh mesh;
+  CHECK(generateFinFetWithTetGen(40000, mesh).ok());
+  double low = mesh.point(0)[0], high = low;
+  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  {
+    low = std::min(low, mesh.point(p)[0]);
+    high = std::max(high, mesh.point(p)[0]);
+  }
+  weights.assign(mesh.tets.size(), 1);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    double x = 0;
+    for (PointId p : mesh.tets[t])
+    {
+      x += 0.25 * mesh.point(p)[0];
+    }
+    weights[t] = x < low + 0.3 * (high - low) ? 40 : 1;
+  }
+  const std::int64_t total = std::accumulate(weights.begin(), weights.end(), std::int64_t{ 0 });
+  const auto weightsOf = [&](const std::vector<int>& partitionOf, int partitions)
+  {
+    std::vector<std::int64_t> weightOf(partitions, 0);
+    for (std::size_t t = 0; t < partitionOf.size(); ++t)
+    {
+      weightOf[partitionOf[t]] += weights[t];
+    }
+    return weightOf;
+  };
+  const int partitions = 24;
+  // Every tet in a partition and every partition used (their tet counts differ, by design).
+  const auto checkUsesAll = [&](const std::vector<int>& partitionOf)
+  {
+    std::vector<char> used(partitions, 0);
+    for (int p : partitionOf)
+    {
+      CHECK(p >= 0 && p < partitions);
+      used[std::clamp(p, 0, partitions - 1)] = 1;
+    }
+    CHECK(std::count(used.begin(), used.end(), 0) == 0);
+  };
+  std::vector<int> hilbert, backwards;
+  CHECK(
+    partitionAlongHilbertCurve(mesh, partitions, hilbert, ParallelFor(runSerially), &weights).ok());
+  CHECK(partitionAlongHilbertCurve(mesh, partitions, backwards, ParallelFor(runBackwards), &weights)
+          .ok());
+  CHECK(hilbert == backwards);
+  checkUsesAll(hilbert);
+  for (std::int64_t weight : weightsOf(hilbert, partitions))
+  {
+    CHECK(std::abs(weight - total / partitions) <= 40);
+  }
+  // Unweighted, the same cut holds equal counts, so the light side's runs weigh far less.
+  std::vector<int> counted;
+  CHECK(partitionAlongHilbertCurve(mesh, partitions, counted).ok());
+  const std::vector<std::int64_t> countedWeights = weightsOf(counted, partitions);
+  CHECK(*std::max_element(countedWeights.begin(), countedWeights.end()) >
+    2 * *std::min_element(countedWeights.begin(), countedWeights.end()));
+
+  WorkerPool workers(2);
+  const GraphPartitioner inWorkers = [&](const DualGraph& graph, int parts, std::vector<int>& part)
+  {
+    CHECK_EQUAL(graph.vertexWeights.size() + 1, graph.offsets.size());
+    const std::string failure =
+      workers.partitionGraph(currentThreadIndex(), graph, parts, false, part);
+    CHECK(failure.empty());
+    return failure.empty() ? Status::success() : Status::failure(failure);
+  };
+  std::vector<int> chunked;
+  CHECK(partitionInCurveChunks(mesh, partitions, 4, inWorkers, chunked, parallelForOn(2), &weights)
+          .ok());
+  checkUsesAll(chunked);
+  PartitioningOptions options;
+  options.contiguous = false;
+  options.tetWeights = &weights;
+  std::vector<int> metis;
+  CHECK(partitionMesh(mesh, partitions, metis, options).ok());
+  checkUsesAll(metis);
+  // METIS keeps parts within a few percent of the mean weight; by counts they would differ as the
+  // unweighted runs do.
+  for (const std::vector<int>* partitionOf : { &chunked, &metis })
+  {
+    for (std::int64_t weight : weightsOf(*partitionOf, partitions))
+    {
+      CHECK(weight <= 1.1 * total / partitions + 40 && weight >= 0.85 * total / partitions - 40);
+    }
+  }
+}
+
 int main()
 {
   test_flat_and_hierarchical();
@@ -813,5 +933,6 @@ int main()
   test_curve_chunk_count();
   test_curve_chunks_partition_inside_chunks();
   test_metis_worker_matches_in_process();
+  test_weighted_partitions_balance_weight();
   return cgmesh_test::finish("TestPartitioning");
 }

@@ -20,7 +20,7 @@ int curveChunkCount(CellId tetCount, int numberOfPartitions)
 
 Status partitionInCurveChunks(const TetMesh& mesh, int numberOfPartitions, int chunks,
   const GraphPartitioner& partitionGraph, std::vector<int>& partitionOfCell,
-  const ParallelFor& parallelFor)
+  const ParallelFor& parallelFor, const TetWeights* weights)
 {
   const CellId tetCount = mesh.numberOfTets();
   partitionOfCell.assign(tetCount, 0);
@@ -32,6 +32,10 @@ Status partitionInCurveChunks(const TetMesh& mesh, int numberOfPartitions, int c
   chunks = std::clamp(chunks, 1, numberOfPartitions);
   DualGraph graph;
   Status status = buildDualGraph(mesh.tets, graph, parallelFor);
+  if (weights)
+  {
+    graph.vertexWeights = *weights;
+  }
   if (status.ok() && chunks == 1)
   {
     return partitionGraph(graph, numberOfPartitions, partitionOfCell);
@@ -57,14 +61,35 @@ Status partitionInCurveChunks(const TetMesh& mesh, int numberOfPartitions, int c
   {
     return status;
   }
+  const auto firstPartitionOf = [&](std::int64_t c)
+  {
+    return static_cast<int>(c * numberOfPartitions / chunks);
+  };
+  std::vector<CellId> chunkStart(static_cast<std::size_t>(chunks) + 1);
+  if (weights)
+  {
+    std::vector<CellId> least(static_cast<std::size_t>(chunks));
+    for (int c = 0; c < chunks; ++c)
+    {
+      least[c] = firstPartitionOf(c + 1) - firstPartitionOf(c);
+    }
+    chunkStart = weightedRunStarts(order, *weights, least);
+  }
+  else
+  {
+    for (int c = 0; c <= chunks; ++c)
+    {
+      chunkStart[c] = c * tetCount / chunks;
+    }
+  }
   std::vector<Status> statusOfChunk(chunks, Status::success());
   status = parallelFor(chunks,
     [&](std::int64_t c)
     {
-      const CellId begin = c * tetCount / chunks;
-      const CellId end = (c + 1) * tetCount / chunks;
-      const int firstPartition = static_cast<int>(c * numberOfPartitions / chunks);
-      const int parts = static_cast<int>((c + 1) * numberOfPartitions / chunks) - firstPartition;
+      const CellId begin = chunkStart[c];
+      const CellId end = chunkStart[c + 1];
+      const int firstPartition = firstPartitionOf(c);
+      const int parts = firstPartitionOf(c + 1) - firstPartition;
       std::vector<int> local(static_cast<std::size_t>(end - begin), 0);
       if (parts > 1)
       {

@@ -9,6 +9,7 @@
 #ifndef cgmesh_CurveChunkPartitioner_h
 #define cgmesh_CurveChunkPartitioner_h
 
+#include "Partitioning/HilbertPartitioner.h"
 #include "Partitioning/MeshPartitioner.h"
 
 #include "Core/Status.h"
@@ -34,12 +35,13 @@ using GraphPartitioner =
 int curveChunkCount(CellId tetCount, int numberOfPartitions);
 
 // Assigns every tet a partition in [0, numberOfPartitions): chunk c holds the tets at positions
-// [c n / C, (c + 1) n / C) along the curve and the partitions [c k / C, (c + 1) k / C), which
-// `partitionGraph` assigns inside it. Chunks are handled through `parallelFor`; the result does
-// not depend on it.
+// [c n / C, (c + 1) n / C) along the curve (with `weights`, runs of equal weight,
+// weightedRunStarts) and the partitions [c k / C, (c + 1) k / C), which `partitionGraph` assigns
+// inside it, on the chunk's graph with the tets' weights. Chunks are handled through
+// `parallelFor`; the result does not depend on it.
 Status partitionInCurveChunks(const TetMesh& mesh, int numberOfPartitions, int chunks,
   const GraphPartitioner& partitionGraph, std::vector<int>& partitionOfCell,
-  const ParallelFor& parallelFor = ParallelFor(runSerially));
+  const ParallelFor& parallelFor = ParallelFor(runSerially), const TetWeights* weights = nullptr);
 
 } // namespace cgmesh
 

@@ -208,6 +208,10 @@ DualGraph subgraphOfPositions(const DualGraph& graph, const std::vector<CellId>&
       }
     }
     sub.offsets.push_back(static_cast<std::int64_t>(sub.neighbours.size()));
+    if (!graph.vertexWeights.empty())
+    {
+      sub.vertexWeights.push_back(graph.vertexWeights[v]);
+    }
   }
   return sub;
 }

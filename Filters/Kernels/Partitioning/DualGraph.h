@@ -18,6 +18,8 @@ struct DualGraph
 {
   std::vector<std::int64_t> offsets; // size numberOfTets + 1
   std::vector<CellId> neighbours;
+  // The work each vertex stands for, which partitions balance (TetWeights); empty: 1 each.
+  std::vector<std::int64_t> vertexWeights;
 };
 
 // The dual graph of `tets`. A face found in more than two tets (invalid input) links none of
@@ -27,7 +29,7 @@ Status buildDualGraph(
   const TetList& tets, DualGraph& graph, const ParallelFor& parallelFor = ParallelFor(runSerially));
 
 // The subgraph induced by the vertices at positions [begin, end) of `order`, renumbered by
-// position - begin; `positionOf` inverts `order`.
+// position - begin, with their weights; `positionOf` inverts `order`.
 DualGraph subgraphOfPositions(const DualGraph& graph, const std::vector<CellId>& order,
   const std::vector<CellId>& positionOf, CellId begin, CellId end);
 

@@ -99,8 +99,53 @@ Status orderTetsAlongHilbertCurve(
     });
 }
 
+std::vector<CellId> weightedRunStarts(
+  const std::vector<CellId>& order, const TetWeights& weights, const std::vector<CellId>& least)
+{
+  const CellId count = static_cast<CellId>(order.size());
+  const std::size_t pieces = least.size();
+  std::int64_t total = 0;
+  for (CellId id : order)
+  {
+    total += weights[id];
+  }
+  std::vector<CellId> start(pieces + 1, count);
+  // The weight before each position against r / pieces of the total, in integers.
+  std::int64_t before = 0;
+  std::size_t run = 0;
+  for (CellId position = 0; position < count && run < pieces; ++position)
+  {
+    while (run < pieces &&
+      static_cast<__int128>(before) * static_cast<__int128>(pieces) >=
+        static_cast<__int128>(run) * static_cast<__int128>(total))
+    {
+      start[run++] = position;
+    }
+    before += weights[order[position]];
+  }
+  // Each start within [tets the runs before need, tets left for the runs from it on], then at
+  // least least[r - 1] after the one before: a start clamped so cannot pass its upper bound.
+  std::vector<CellId> neededBefore(pieces + 1, 0);
+  for (std::size_t r = 0; r < pieces; ++r)
+  {
+    neededBefore[r + 1] = neededBefore[r] + least[r];
+  }
+  const CellId needed = neededBefore[pieces];
+  for (std::size_t r = 0; r < pieces; ++r)
+  {
+    start[r] = std::clamp(start[r], neededBefore[r], count - (needed - neededBefore[r]));
+    if (r > 0)
+    {
+      start[r] = std::max(start[r], start[r - 1] + least[r - 1]);
+    }
+  }
+  start[0] = 0;
+  start[pieces] = count;
+  return start;
+}
+
 Status partitionAlongHilbertCurve(const TetMesh& mesh, int numberOfPartitions,
-  std::vector<int>& partitionOfCell, const ParallelFor& parallelFor)
+  std::vector<int>& partitionOfCell, const ParallelFor& parallelFor, const TetWeights* weights)
 {
   const CellId tetCount = mesh.numberOfTets();
   partitionOfCell.assign(tetCount, 0);
@@ -114,6 +159,19 @@ Status partitionAlongHilbertCurve(const TetMesh& mesh, int numberOfPartitions,
   if (!status.ok())
   {
     return status;
+  }
+  if (weights)
+  {
+    const std::vector<CellId> start = weightedRunStarts(
+      order, *weights, std::vector<CellId>(static_cast<std::size_t>(numberOfPartitions), 1));
+    return parallelFor(numberOfPartitions,
+      [&](std::int64_t run)
+      {
+        for (CellId position = start[run]; position < start[run + 1]; ++position)
+        {
+          partitionOfCell[order[position]] = static_cast<int>(run);
+        }
+      });
   }
   // Run r holds the tets at positions [r n / k, (r + 1) n / k).
   return forEachRange(parallelFor, tetCount, IndicesPerCopyRange,

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <utility>
 
@@ -57,6 +58,13 @@ Status partitionGraphWithMetis(
   }
   std::vector<idx_t> offsets(graph.offsets.begin(), graph.offsets.end());
   std::vector<idx_t> neighbours(graph.neighbours.begin(), graph.neighbours.end());
+  std::vector<idx_t> weights(graph.vertexWeights.begin(), graph.vertexWeights.end());
+  if (!weights.empty() &&
+    std::accumulate(graph.vertexWeights.begin(), graph.vertexWeights.end(), std::int64_t{ 0 }) >=
+      std::numeric_limits<idx_t>::max())
+  {
+    return Status::failure(ErrorKind::InvalidInput, "tet weights too large for METIS' indices");
+  }
   std::vector<idx_t> partition(vertexTotal, 0);
   idx_t vertexCount = static_cast<idx_t>(vertexTotal);
   idx_t constraintCount = 1;
@@ -71,7 +79,8 @@ Status partitionGraphWithMetis(
   auto run = [&]()
   {
     return METIS_PartGraphKway(&vertexCount, &constraintCount, offsets.data(), neighbours.data(),
-      nullptr, nullptr, nullptr, &partCount, nullptr, nullptr, options, &edgeCut, partition.data());
+      weights.empty() ? nullptr : weights.data(), nullptr, nullptr, &partCount, nullptr, nullptr,
+      options, &edgeCut, partition.data());
   };
   int result = run();
   if (result != METIS_OK && options[METIS_OPTION_CONTIG] == 1)
@@ -144,10 +153,13 @@ Status partitionHierarchically(const DualGraph& graph, int parts,
     return status;
   }
   const VertexGroups coarse = groupVertices(coarsePart, coarseCount);
-  std::vector<std::int64_t> sizes(coarseCount);
+  std::vector<std::int64_t> sizes(coarseCount); // weights, or counts
   for (int c = 0; c < coarseCount; ++c)
   {
-    sizes[c] = coarse.groupStart[c + 1] - coarse.groupStart[c];
+    for (CellId position = coarse.groupStart[c]; position < coarse.groupStart[c + 1]; ++position)
+    {
+      sizes[c] += graph.vertexWeights.empty() ? 1 : graph.vertexWeights[coarse.order[position]];
+    }
   }
   const std::vector<int> shares = proportionalShares(sizes, parts);
   partOfVertex.assign(vertexCount, 0);
@@ -202,6 +214,10 @@ Status partitionMesh(const TetMesh& mesh, int numberOfPartitions, std::vector<in
   if (!built.ok())
   {
     return built;
+  }
+  if (options.tetWeights)
+  {
+    graph.vertexWeights = *options.tetWeights;
   }
   if (numberOfPartitions >= options.hierarchicalFrom)
   {

@@ -30,6 +30,9 @@ struct PartitioningOptions
   // second level runs one METIS call after another: METIS seeds a process-wide random generator,
   // so overlapping calls would make the partitions depend on thread timing.
   int hierarchicalFrom = 4096;
+  // When set: the work each tet stands for (TetWeights), which the parts balance instead of
+  // their tet counts.
+  const std::vector<std::int64_t>* tetWeights = nullptr;
 };
 
 // A partition count a mesh of `tetCount` tets can be cut into: at least 1, at most one per tet.

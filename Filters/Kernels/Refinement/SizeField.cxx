@@ -265,6 +265,33 @@ Status edgeLengthRatios(
     });
 }
 
+std::vector<std::int64_t> forecastWeights(const TetMesh& mesh)
+{
+  const std::size_t count = mesh.tets.size();
+  std::vector<double> forecast(count, 0.0);
+  double total = 0;
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    const Tet& tet = mesh.tets[t];
+    const double size =
+      0.25 * (mesh.sizes[tet[0]] + mesh.sizes[tet[1]] + mesh.sizes[tet[2]] + mesh.sizes[tet[3]]);
+    if (std::isfinite(size) && size > 0)
+    {
+      // volume / (size^3 / (6 sqrt 2)), the regular tet's volume
+      forecast[t] = std::abs(signedVolume6(mesh, tet)) * std::sqrt(2.0) / (size * size * size);
+      total += forecast[t];
+    }
+  }
+  const double mean = std::min(16.0, std::ldexp(1.0, 30) / std::max<double>(1.0, count));
+  const double scale = total > 0 ? mean * static_cast<double>(count) / total : 0.0;
+  std::vector<std::int64_t> weights(count);
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    weights[t] = 1 + std::llround(scale * forecast[t]);
+  }
+  return weights;
+}
+
 std::vector<char> selectTets(
   const TetMesh& mesh, const std::vector<int>& regions, const std::array<double, 6>* box)
 {
