@@ -108,7 +108,8 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "a warning when requested); not used with PartitionByRegion",
       &O::numberOfPartitions },
     { "Partitioner", "--partitioner", "NAME", K::Choice, 0, 3, 0, "", S::Any,
-      "how the mesh is cut into NumberOfPartitions parts; not used with PartitionByRegion, "
+      "how the mesh is cut into NumberOfPartitions parts, of equal forecast work with a size "
+      "field, regions or a box (else of equal tet counts); not used with PartitionByRegion, "
       "which runs METIS inside each region",
       &O::partitioner,
       { { "auto", "Automatic",
