@@ -140,6 +140,43 @@ void test_edge_removal_three_to_two()
   CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
 }
 
+// With a size field no change may make an edge longer than sqrt(2) h, except one that mends a
+// sliver (mean ratio under 0.2): a star whose inner vertex sits nearly on corner 0, with h = 0.5
+// (every edge of the octahedron already longer than sqrt(2) h), is mended anyway; a star whose
+// worst tet is poor but no sliver stays as it is.
+void test_size_bound_gives_way_to_mending_slivers()
+{
+  for (const bool sliver : { true, false })
+  {
+    std::vector<double> coordinates;
+    const double nearCorner[3] = { 0.97, 0.01, -0.01 }, offCentre[3] = { 0.45, 0.1, -0.1 };
+    PartitionMesh star = starAround(coordinates, sliver ? nearCorner : offCentre);
+    const double worstBefore = worstMeanRatio(asMesh(star, coordinates));
+    CHECK(sliver ? worstBefore < 0.2 : worstBefore > 0.2 && worstBefore < 0.5);
+    const MeshReport before = inspectMesh(asMesh(star, coordinates));
+    std::vector<double> provisional, sizes(7, 0.5), provisionalSizes;
+    PartitionPoints points{ &coordinates, &provisional, &sizes, &provisionalSizes };
+    ImprovementParameters parameters;
+    ImprovementStatistics statistics;
+    std::vector<PointId> moved;
+    CHECK(improvePartition(star, points, parameters, statistics, moved).ok());
+    const double worstAfter = worstMeanRatio(asMesh(star, coordinates));
+    if (sliver)
+    {
+      CHECK(worstAfter > 0.3);
+    }
+    else
+    {
+      CHECK_EQUAL(statistics.vertexMoves + statistics.edgeRemovals + statistics.faceSwaps, 0);
+      CHECK_CLOSE(worstAfter, worstBefore, 1e-15);
+    }
+    const MeshReport after = inspectMesh(asMesh(star, coordinates));
+    CHECK(after.isValid());
+    CHECK_CLOSE(after.volume, before.volume, 1e-12);
+    CHECK_CLOSE(after.boundaryArea, before.boundaryArea, 1e-12);
+  }
+}
+
 // Coarsening a star whose inner vertex lies next to corner 0: with h = 1.5 everywhere only the
 // edge from the inner vertex to corner 0 is shorter than h / sqrt(2), and collapsing it leaves
 // the octahedron as four tets around its diagonal (corner 0 to corner 1, 2 < sqrt(2) h). Done
@@ -623,6 +660,7 @@ int main()
   test_smoothing_moves_free_vertex_only();
   test_edge_removal_three_to_two();
   test_collapse_only_where_flagged();
+  test_size_bound_gives_way_to_mending_slivers();
   test_tets_left_are_those_still_needing_work();
   test_settled_vertices_are_free_ones_that_stayed();
   test_screening_the_listed_tets_finds_all_work();

@@ -93,6 +93,9 @@ private:
   // sqrt(2) h (never without a size field: then nothing is looked at).
   bool longerThanSizeAt(int v, const int* neighbours, std::size_t count) const;
   bool hasEdgeLongerThanSize(const Corners& tet) const;
+  // Whether a change that replaces tets whose worst cubed mean ratio is `worstBefore` must keep
+  // every edge within sqrt(2) h: not when it mends a sliver (SliverMeanRatio).
+  bool keepsSizeBound(double worstBefore) const { return worstBefore >= SliverCubed; }
   void coarsen(ImprovementStatistics& statistics);
   bool collapseVertex(int a);
   bool collapseMakesLongEdge(int a, int b, const std::vector<int>& ball);
@@ -136,6 +139,11 @@ private:
   ImprovementParameters Parameters;
   double TargetCubed = 0;        // Parameters.targetQuality cubed
   double CollapseFloorCubed = 0; // Parameters.collapseQualityFloor cubed
+  // A tet under this mean ratio is a sliver: the size field's long-edge guard gives way to mending
+  // it. The Delaunay method's graded cube kept a cluster of 1.5 to 6 degree tets that one edge
+  // longer than sqrt(2) h would have mended.
+  static constexpr double SliverMeanRatio = 0.2;
+  static constexpr double SliverCubed = SliverMeanRatio * SliverMeanRatio * SliverMeanRatio;
   // Scratch of removeEdge (the tets around the edge, its ring), kept for their memory: it runs for
   // every edge of every poor tet.
   std::vector<int> AroundEdge, Ring;

@@ -210,7 +210,7 @@ bool Improver::removeEdge(int a, int b)
   }
   for (const Corners& corners : created)
   {
-    if (this->hasEdgeLongerThanSize(corners))
+    if (this->keepsSizeBound(before) && this->hasEdgeLongerThanSize(corners))
     {
       return false; // a new edge refinement would split again
     }
@@ -283,7 +283,7 @@ bool Improver::swapFace(int t, int skip)
   }
   const std::vector<int> replaced = { t, neighbour };
   if (!this->withinVolumeBound(created, this->largestVolume(replaced)) ||
-    this->longerThanSizeAt(a, &b, 1))
+    (this->keepsSizeBound(before) && this->longerThanSizeAt(a, &b, 1)))
   {
     return false; // too large for Delaunay's bound, or an edge refinement would split again
   }
@@ -364,7 +364,7 @@ bool Improver::smoothVertex(int v)
       after = std::min(after, this->quality(this->Tets[t]));
     }
     if (after > 0 && improves(after, before) && this->withinVolumeBound(moved, largestBefore) &&
-      !this->longerThanSizeAt(v, seen.data(), seen.size()))
+      !(this->keepsSizeBound(before) && this->longerThanSizeAt(v, seen.data(), seen.size())))
     {
       for (int t : star)
       {
