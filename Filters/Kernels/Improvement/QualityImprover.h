@@ -67,7 +67,8 @@ struct PartitionPoints
   std::vector<double>* global = nullptr;
   std::vector<double>* provisional = nullptr;
   // The size field at the same points; null without one. With it, coarsening may run, and no
-  // collapse or smoothing move makes an edge longer than sqrt(2) h.
+  // collapse, and no other change but one that mends a sliver (Improver::SliverMeanRatio), makes
+  // an edge longer than sqrt(2) h.
   const std::vector<double>* globalSizes = nullptr;
   const std::vector<double>* provisionalSizes = nullptr;
 
