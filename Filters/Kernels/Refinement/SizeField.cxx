@@ -265,6 +265,17 @@ Status edgeLengthRatios(
     });
 }
 
+double regularTetsFilling(
+  const Tet& tet, const std::vector<double>& coordinates, const std::vector<double>& sizes)
+{
+  const double volume =
+    signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
+      coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]) /
+    6.0;
+  const double size = 0.25 * (sizes[tet[0]] + sizes[tet[1]] + sizes[tet[2]] + sizes[tet[3]]);
+  return volume / (size * size * size / (6.0 * std::sqrt(2.0))); // the regular tet's volume
+}
+
 std::vector<std::int64_t> forecastWeights(const TetMesh& mesh)
 {
   const std::size_t count = mesh.tets.size();
@@ -272,15 +283,8 @@ std::vector<std::int64_t> forecastWeights(const TetMesh& mesh)
   double total = 0;
   for (std::size_t t = 0; t < count; ++t)
   {
-    const Tet& tet = mesh.tets[t];
-    const double size =
-      0.25 * (mesh.sizes[tet[0]] + mesh.sizes[tet[1]] + mesh.sizes[tet[2]] + mesh.sizes[tet[3]]);
-    if (std::isfinite(size) && size > 0)
-    {
-      // volume / (size^3 / (6 sqrt 2)), the regular tet's volume
-      forecast[t] = std::abs(signedVolume6(mesh, tet)) * std::sqrt(2.0) / (size * size * size);
-      total += forecast[t];
-    }
+    forecast[t] = regularTetsFilling(mesh.tets[t], mesh.coordinates, mesh.sizes);
+    total += forecast[t];
   }
   const double mean = std::min(16.0, std::ldexp(1.0, 30) / std::max<double>(1.0, count));
   const double scale = total > 0 ? mean * static_cast<double>(count) / total : 0.0;

@@ -59,9 +59,14 @@ Status measureEdgeSizes(
 Status edgeLengthRatios(
   const TetMesh& mesh, const ParallelFor& parallelFor, std::vector<double>& ratios);
 
+// How many regular tets of its corners' mean size fill `tet` (a positively oriented tet of
+// `coordinates`, with `sizes` per point): the work a size field asks of it, 0 where a corner's
+// size is infinite (outside a refinement selection).
+double regularTetsFilling(
+  const Tet& tet, const std::vector<double>& coordinates, const std::vector<double>& sizes);
+
 // Weights for partitioning by the work a size field puts into each tet (TetWeights): 1 for the
-// tet itself plus its forecast output, the volume over that of the regular tet of its corners'
-// mean size, scaled to a mean of 16 (less on meshes of over 2^26 tets, so that the total stays
+// tet itself plus its forecast output, regularTetsFilling(), scaled to a mean of 16 (less on meshes of over 2^26 tets, so that the total stays
 // within METIS' 32-bit indices); an infinite size (outside a selection) forecasts nothing. With
 // the field graded to 1.3 per edge, a FinFET's forecast runs from a few tets to thousands.
 std::vector<std::int64_t> forecastWeights(const TetMesh& mesh);

@@ -1,6 +1,7 @@
 #include "Refinement/TetGenRefiner.h"
 
 #include "Refinement/ConstrainedEdgeSplits.h"
+#include "Refinement/SizeField.h"
 #include "Refinement/TetGenSession.h"
 
 #include "Core/ConstrainedFaces.h"
@@ -234,11 +235,6 @@ std::string refineWithTetGen(PartitionMesh& partition, const std::vector<Face>& 
 // Big cube with h = 0.01 + 0.08 |x - 0.5|, whose volume holds 1.02 M regular tets.
 constexpr double SizeFieldTetsPerRegularTet = 1.65;
 
-double regularTetVolume(double edge)
-{
-  return edge * edge * edge / (6.0 * std::sqrt(2.0));
-}
-
 } // namespace
 
 void setTriangleFacets(tetgenio& io, const int* corners, int count)
@@ -285,12 +281,7 @@ double forecastDelaunayTetsForSizes(
   double total = 0;
   for (const Tet& tet : tets)
   {
-    const double volume =
-      signedVolume6(coordinates.data() + 3 * tet[0], coordinates.data() + 3 * tet[1],
-        coordinates.data() + 3 * tet[2], coordinates.data() + 3 * tet[3]) /
-      6.0;
-    const double size = 0.25 * (sizes[tet[0]] + sizes[tet[1]] + sizes[tet[2]] + sizes[tet[3]]);
-    total += SizeFieldTetsPerRegularTet * volume / regularTetVolume(size);
+    total += SizeFieldTetsPerRegularTet * regularTetsFilling(tet, coordinates, sizes);
   }
   return total;
 }
