@@ -66,9 +66,9 @@ double regularTetsFilling(
   const Tet& tet, const std::vector<double>& coordinates, const std::vector<double>& sizes);
 
 // Weights for partitioning by the work a size field puts into each tet (TetWeights): 1 for the
-// tet itself plus its forecast output, regularTetsFilling(), scaled to a mean of 16 (less on meshes of over 2^26 tets, so that the total stays
-// within METIS' 32-bit indices); an infinite size (outside a selection) forecasts nothing. With
-// the field graded to 1.3 per edge, a FinFET's forecast runs from a few tets to thousands.
+// tet itself plus its forecast output, regularTetsFilling(), scaled to a mean of 16 (less on
+// meshes of over 2^26 tets, so that the total stays within METIS' 32-bit indices). With the
+// field graded to 1.3 per edge, a FinFET's forecast runs from a few tets to thousands.
 std::vector<std::int64_t> forecastWeights(const TetMesh& mesh);
 
 // Where refinement may happen: tets of the listed regions (empty: any region) whose bounding box
