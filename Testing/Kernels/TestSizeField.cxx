@@ -10,6 +10,7 @@
 #include "MeshChecks.h"
 #include "Refinement/SizeField.h"
 #include "ResultComparison.h"
+#include "ScheduleForTests.h"
 #include "TestHarness.h"
 #include "Validation/MeshValidation.h"
 
@@ -163,16 +164,7 @@ void test_edge_measure_counts_every_edge_once()
   CHECK(expected.edges > 10000 && expected.edges < static_cast<std::int64_t>(edges.size()));
 
   // In order, and with the ranges taken last to first.
-  const ParallelFor backwards = [](
-                                  std::int64_t count, const std::function<void(std::int64_t)>& body)
-  {
-    for (std::int64_t i = count - 1; i >= 0; --i)
-    {
-      body(i);
-    }
-    return Status::success();
-  };
-  for (const ParallelFor& parallelFor : { ParallelFor(runSerially), backwards })
+  for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
   {
     EdgeSizeReport measured;
     CHECK(measureEdgeSizes(mesh, parallelFor, measured).ok());
