@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <malloc.h>
 #include <new>
 #include <sys/socket.h>
 #include <sys/time.h>
@@ -101,9 +102,21 @@ bool servePartitionGraph(int socket)
         : sendArray(socket, failure.data(), static_cast<std::int64_t>(failure.size())));
 }
 
+// Allocations up to this size come from the worker's heap, which keeps up to this much freed
+// memory: far more than a partition's TetGen call takes, and a bound on what a worker holds idle.
+constexpr int MaximumHeldAllocation = 256 << 20;
+
 // The worker's life: read a request, serve it; leave on end of input.
 [[noreturn]] void serveRequests(int socket)
 {
+  // TetGen allocates and frees its pools on every call. Kept in the worker's heap (no block of
+  // up to 256 MiB mapped on its own, none handed back when freed), the next call reuses those pages
+  // instead of faulting fresh zeroed ones in: on the Big cube at V = 0.1 x the mean tet volume,
+  // one thread, the run's page faults fell from 241,000 to 102,000 and its system time from 0.99
+  // to 0.49 s. Only the worker, a process of this library's own, is tuned so; the host may be
+  // ParaView's.
+  mallopt(M_MMAP_THRESHOLD, MaximumHeldAllocation);
+  mallopt(M_TRIM_THRESHOLD, MaximumHeldAllocation);
   for (;;)
   {
     std::int32_t kind = 0;
