@@ -280,22 +280,27 @@ Status buildGraphOfRuns(const std::vector<TetRun>& runs, int numberOfPartitions,
   }
 
   // Rows are gathered by ranges of partitions concurrently, each range with its own stamps (at
-  // most 64 ranges, so the stamps cost at most 64 entries per partition), and joined in partition
-  // order: at 65,536 partitions the serial gathering was half the graph.
+  // most 64 ranges, so the stamps cost at most 64 entries per partition): at 65,536 partitions
+  // the serial gathering was half the graph. They come out unsorted; as the relation is
+  // symmetric, each row is then written sorted by handing every pair (q, r) to row r in
+  // ascending q, range of rows by range of rows: sorting the 65,536 rows took 0.015 of the
+  // graph's 0.09 s at 2 threads.
   const std::int64_t rangeSize =
     std::max<std::int64_t>(PartitionsPerRowRange, (numberOfPartitions + 63) / 64);
   const std::int64_t ranges = (numberOfPartitions + rangeSize - 1) / rangeSize;
-  std::vector<std::vector<int>> rowsOfRange(ranges);
+  // pairsTo[source range * ranges + target range]: (r, q) with q in the first, r in the second,
+  // in ascending q.
+  std::vector<std::vector<std::pair<int, int>>> pairsTo(static_cast<std::size_t>(ranges * ranges));
   std::vector<std::int64_t> rowLength(static_cast<std::size_t>(numberOfPartitions), 0);
   status = forEachRange(parallelFor, numberOfPartitions, rangeSize,
     [&](std::int64_t begin, std::int64_t end)
     {
-      std::vector<int>& rows = rowsOfRange[begin / rangeSize];
+      std::vector<std::pair<int, int>>* pairs = pairsTo.data() + begin / rangeSize * ranges;
       std::vector<int> stamp(numberOfPartitions, -1);
       for (int q = static_cast<int>(begin); q < end; ++q)
       {
         stamp[q] = q;
-        const std::size_t rowStart = rows.size();
+        std::int64_t length = 0;
         for (std::int64_t k = groupsOfPartition[q]; k < groupsOfPartition[q + 1]; ++k)
         {
           forEachMember(groupList[k],
@@ -304,12 +309,12 @@ Status buildGraphOfRuns(const std::vector<TetRun>& runs, int numberOfPartitions,
               if (stamp[r] != q)
               {
                 stamp[r] = q;
-                rows.push_back(r);
+                pairs[r / rangeSize].emplace_back(r, q);
+                ++length;
               }
             });
         }
-        std::sort(rows.begin() + rowStart, rows.end());
-        rowLength[q] = static_cast<std::int64_t>(rows.size() - rowStart);
+        rowLength[q] = length;
       }
     });
   if (!status.ok())
@@ -325,12 +330,21 @@ Status buildGraphOfRuns(const std::vector<TetRun>& runs, int numberOfPartitions,
   {
     graph.offsets[q + 1] = graph.offsets[q] + rowLength[q];
   }
-  graph.neighbours.reserve(static_cast<std::size_t>(graph.offsets.back()));
-  for (const std::vector<int>& rows : rowsOfRange)
-  {
-    graph.neighbours.insert(graph.neighbours.end(), rows.begin(), rows.end());
-  }
-  return Status::success();
+  graph.neighbours.resize(static_cast<std::size_t>(graph.offsets.back()));
+  return forEachRange(parallelFor, numberOfPartitions, rangeSize,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      std::vector<std::int64_t> next(
+        graph.offsets.begin() + begin, graph.offsets.begin() + end);
+      const std::int64_t target = begin / rangeSize;
+      for (std::int64_t source = 0; source < ranges; ++source)
+      {
+        for (const auto& [r, q] : pairsTo[static_cast<std::size_t>(source * ranges + target)])
+        {
+          graph.neighbours[static_cast<std::size_t>(next[r - begin]++)] = q;
+        }
+      }
+    });
 }
 
 } // namespace
