@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <utility>
 
 namespace cgmesh
@@ -56,10 +57,12 @@ Status collectInterfaceGroups(const std::vector<TetRun>& runs, PointId numberOfP
   const std::int64_t numberOfChunks = static_cast<std::int64_t>(chunks.size());
   const std::size_t points = static_cast<std::size_t>(numberOfPoints);
 
-  // The partition last recorded as an extra one per point: a point's tets in one partition mostly
-  // come one after another, so this keeps most repeats out of the lists. A race only lets a
-  // repeat through, which the sort drops.
-  PartitionSlots lastExtra(points);
+  // The two partitions last recorded as extra ones per point (the latest in the low half): a
+  // point's tets come from a few partitions in turn, so this keeps most repeats out of the lists.
+  // On a 65,536-partition cube (1.05 M tets), remembering one let 1.9 M pairs through for 1.0 M
+  // distinct, two 1.39 M, and the groups took 0.039-0.042 s instead of 0.046-0.052 (2 threads).
+  // A race only lets a repeat through, which the sort drops.
+  std::vector<std::atomic<std::uint64_t>> lastExtras(points);
   PartitionSlots claim(points);
   std::vector<std::vector<std::pair<PointId, int>>> extraOfChunk(chunks.size());
   Status status = parallelFor(numberOfChunks,
@@ -80,9 +83,12 @@ Status collectInterfaceGroups(const std::vector<TetRun>& runs, PointId numberOfP
           {
             continue;
           }
-          if (seen != mine && lastExtra[p].load(std::memory_order_relaxed) != mine)
+          const std::uint64_t recorded = lastExtras[p].load(std::memory_order_relaxed);
+          const std::uint64_t latest = recorded & 0xffffffffu;
+          const std::uint64_t partition = static_cast<std::uint32_t>(mine);
+          if (seen != mine && latest != partition && (recorded >> 32) != partition)
           {
-            lastExtra[p].store(mine, std::memory_order_relaxed);
+            lastExtras[p].store(latest << 32 | partition, std::memory_order_relaxed);
             found.emplace_back(p, mine - 1);
           }
         }
@@ -95,7 +101,7 @@ Status collectInterfaceGroups(const std::vector<TetRun>& runs, PointId numberOfP
 
   // A counting sort by point: counts, their prefix sums by ranges of points, then every pair
   // placed at its point's cursor. `cursor` holds the counts first, then the next free slot.
-  PartitionSlots& cursor = lastExtra;
+  PartitionSlots cursor(points);
   status = forEachRange(parallelFor, numberOfPoints, IndicesPerCopyRange,
     [&](std::int64_t begin, std::int64_t end)
     {
