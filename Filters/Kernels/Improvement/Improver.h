@@ -11,6 +11,7 @@
 #include "Core/TetQuality.h"
 #include "Improvement/IncidenceLists.h"
 #include "Improvement/QualityImprover.h"
+#include "Refinement/SizeField.h"
 
 #include <array>
 #include <cmath>
@@ -88,7 +89,12 @@ private:
 
   // The size field (EdgeCollapse.cxx), and coarsening.
   double sizeAt(int v) const { return this->Size[v]; }
-  bool isShort(int a, int b) const;
+  // Whether edge (a, b) is shorter than h / sqrt(2): asked for every edge of the tets coarsening
+  // looks at, so defined here to be inlined.
+  bool isShort(int a, int b) const
+  {
+    return shorterThanSize(squaredDistance(this->at(a), this->at(b)), this->sizeAt(a), this->sizeAt(b));
+  }
   // Whether an edge from v to one of the `count` vertices at `neighbours` is longer than
   // sqrt(2) h (never without a size field: then nothing is looked at).
   bool longerThanSizeAt(int v, const int* neighbours, std::size_t count) const;
@@ -149,6 +155,9 @@ private:
   std::vector<int> AroundEdge, Ring;
   // Scratch of collapseVertex and linkConditionHolds, kept for their memory.
   std::vector<std::pair<double, int>> CollapseCandidates;
+  std::vector<int> CollapseBall;
+  std::vector<Corners> CollapseCreated;
+  std::vector<int> CollapseSources;
   std::vector<int> LinkRing;
   std::vector<std::pair<int, int>> LinkRingEdges, LinkEdgesOfA, LinkEdgesOfB;
   // LinkStamp where a vertex neighbours the collapsed end, is a new neighbour of the kept one, or

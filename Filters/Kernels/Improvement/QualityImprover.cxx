@@ -476,27 +476,38 @@ void Improver::run(const ImprovementParameters& parameters, ImprovementStatistic
   }
 }
 
-// Whether edge (a, b) is shorter than h / sqrt(2) (see Improver::isShort) with an end that may
-// be collapsed: work for coarsening.
-bool isCollapsibleShortEdge(
-  PointId a, PointId b, const PartitionPoints& points, const ImprovementParameters& parameters)
-{
-  return (mayCollapse(a, parameters) || mayCollapse(b, parameters)) &&
-    shorterThanSize(
-      squaredDistance(points.at(a), points.at(b)), points.sizeAt(a), points.sizeAt(b));
-}
-
-bool hasCollapsibleShortEdge(
+// Bit e set when edge e of `tet` (TetEdgeCorners) is shorter than h / sqrt(2) (see
+// Improver::isShort) and has an end that may be collapsed: work for coarsening. Each corner's
+// position and size are read once for the six edges.
+int collapsibleShortEdges(
   const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters)
 {
-  for (const auto& corners : TetEdgeCorners)
+  bool may[4];
+  for (int k = 0; k < 4; ++k)
   {
-    if (isCollapsibleShortEdge(tet[corners[0]], tet[corners[1]], points, parameters))
+    may[k] = mayCollapse(tet[k], parameters);
+  }
+  if (!(may[0] || may[1] || may[2] || may[3]))
+  {
+    return 0;
+  }
+  const double* x[4];
+  double h[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    x[k] = points.at(tet[k]);
+    h[k] = points.sizeAt(tet[k]);
+  }
+  int mask = 0;
+  for (int e = 0; e < 6; ++e)
+  {
+    const int i = TetEdgeCorners[e][0], j = TetEdgeCorners[e][1];
+    if ((may[i] || may[j]) && shorterThanSize(squaredDistance(x[i], x[j]), h[i], h[j]))
     {
-      return true;
+      mask |= 1 << e;
     }
   }
-  return false;
+  return mask;
 }
 
 bool isPoor(const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters)
@@ -532,12 +543,13 @@ PointIdSet verticesOfWork(const PartitionMesh& partition, const PartitionPoints&
     {
       continue;
     }
-    for (const auto& corners : TetEdgeCorners)
+    const int shortEdges = collapsibleShortEdges(tet, points, parameters);
+    for (int e = 0; shortEdges != 0 && e < 6; ++e)
     {
-      if (isCollapsibleShortEdge(tet[corners[0]], tet[corners[1]], points, parameters))
+      if ((shortEdges >> e) & 1)
       {
-        vertices.emplace(tet[corners[0]], 0);
-        vertices.emplace(tet[corners[1]], 0);
+        vertices.emplace(tet[TetEdgeCorners[e][0]], 0);
+        vertices.emplace(tet[TetEdgeCorners[e][1]], 0);
       }
     }
   }
@@ -621,7 +633,7 @@ bool needsImprovement(
   const Tet& tet, const PartitionPoints& points, const ImprovementParameters& parameters)
 {
   return improvement::isPoor(tet, points, parameters) ||
-    (parameters.coarsen && improvement::hasCollapsibleShortEdge(tet, points, parameters));
+    (parameters.coarsen && improvement::collapsibleShortEdges(tet, points, parameters) != 0);
 }
 
 Status improvePartition(PartitionMesh& partition, const PartitionPoints& points,
