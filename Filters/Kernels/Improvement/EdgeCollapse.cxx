@@ -216,11 +216,19 @@ bool Improver::collapseVertex(int a)
   }
   std::vector<std::pair<double, int>>& candidates = this->CollapseCandidates;
   candidates.clear();
+  // Each neighbour once: it is a corner of several tets of the ball (on the FinFET with its size
+  // field, gathering the candidates took 0.78 s of coarsening's 3.5 s at one thread, 0.43 s so).
+  this->nextLinkStamp();
   for (int t : this->Incident[a])
   {
     for (int b : this->Tets[t])
     {
-      if (b != a && this->isShort(a, b))
+      if (b == a || this->NeighbourMark[b] == this->LinkStamp)
+      {
+        continue;
+      }
+      this->NeighbourMark[b] = this->LinkStamp;
+      if (this->isShort(a, b))
       {
         candidates.emplace_back(squaredDistance(this->at(a), this->at(b)), b);
       }

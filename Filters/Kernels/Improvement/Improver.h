@@ -160,8 +160,9 @@ private:
   std::vector<int> CollapseSources;
   std::vector<int> LinkRing;
   std::vector<std::pair<int, int>> LinkRingEdges, LinkEdgesOfA, LinkEdgesOfB;
-  // LinkStamp where a vertex neighbours the collapsed end, is a new neighbour of the kept one, or
-  // a neighbour mayBeFree() counted; nextLinkStamp() starts a new marking.
+  // LinkStamp where a vertex neighbours the collapsed end, is a new neighbour of the kept one, is
+  // a collapse candidate looked at, or a neighbour mayBeFree() counted; nextLinkStamp() starts a
+  // new marking.
   std::vector<unsigned> NeighbourMark;
   // RingStamp where a vertex is on the ring of the edge linkConditionHolds() looks at.
   std::vector<unsigned> RingMark;
