@@ -362,16 +362,21 @@ Status processColor(IterationContext& iteration, const std::vector<int>& members
   return postSplitsOfColor(iteration, members);
 }
 
-// Room in the point arrays for the points an iteration forecast to make `forecastTets` tets will
-// add (a tet mesh holds about one point per six tets), so that the colours' numbering, which
-// runs on one thread, appends without moving the arrays again and again.
-void reserveForNewPoints(std::int64_t forecastTets, AdaptationState& state)
+std::int64_t countTets(const AdaptationState& state)
 {
   std::int64_t tets = 0;
   for (const PartitionMesh& partition : state.partitions)
   {
     tets += static_cast<std::int64_t>(partition.tets.size());
   }
+  return tets;
+}
+
+// Room in the point arrays for the points an iteration forecast to make `forecastTets` tets from
+// `tets` will add (a tet mesh holds about one point per six tets), so that the colours'
+// numbering, which runs on one thread, appends without moving the arrays again and again.
+void reserveForNewPoints(std::int64_t forecastTets, std::int64_t tets, AdaptationState& state)
+{
   if (forecastTets <= tets)
   {
     return;
@@ -385,13 +390,26 @@ void reserveForNewPoints(std::int64_t forecastTets, AdaptationState& state)
 }
 
 // Refuses an iteration whose forecast size exceeds the guard, before it allocates anything big.
-// Sets `forecastTets` to the forecast, or 0 when there is no guard.
+// Sets `forecastTets` to the forecast, or 0 when there is no guard. `tetsNow` and `tetsBefore`
+// count the tets at the start of this pass and of the one before (0 in the first).
 Status checkForecastSize(const ColorLoopSetup& setup, const RefinementContext& context,
-  const AdaptationState& state, std::int64_t& forecastTets)
+  const AdaptationState& state, std::int64_t tetsNow, std::int64_t tetsBefore,
+  std::int64_t& forecastTets)
 {
   forecastTets = 0;
   if (!setup.refine || setup.remeshSweep || setup.maximumNumberOfCells <= 0)
   {
+    return Status::success();
+  }
+  // A template pass gives a tet 8 children at most: where even that stays within the guard, the
+  // forecast only sizes the room for new points, and after the first pass the last pass's growth
+  // does that well enough without reading every tet. On the FinFET with its size field (six
+  // passes) the forecasts took 4% of the run.
+  if (setup.method == RefinementMethod::Template && tetsBefore > 0 &&
+    tetsNow <= setup.maximumNumberOfCells / 8)
+  {
+    forecastTets = static_cast<std::int64_t>(
+      static_cast<double>(tetsNow) * static_cast<double>(tetsNow) / static_cast<double>(tetsBefore));
     return Status::success();
   }
   const std::int64_t partitions = static_cast<std::int64_t>(state.partitions.size());
@@ -517,6 +535,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
       static_cast<std::size_t>(setup.numberOfIterations) * summary.plan.partitions, 0.0);
   }
   std::vector<char> interfaceVertex; // refinement: per point, in tets of two or more partitions
+  std::int64_t tetsNow = 0, tetsBefore = 0; // at the start of this pass and of the last
   for (int iteration = 0; iteration < setup.numberOfIterations; ++iteration)
   {
     if (setup.refine && iteration > 0 && state.coordinates.size() == pointsAtLastPass)
@@ -558,13 +577,16 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     {
       context.refinement.improvementTarget = setup.improvement.targetQuality;
     }
+    tetsBefore = tetsNow;
+    tetsNow = countTets(state);
     std::int64_t forecastTets = 0;
-    Status forecast = checkForecastSize(setup, context.refinement, state, forecastTets);
+    Status forecast =
+      checkForecastSize(setup, context.refinement, state, tetsNow, tetsBefore, forecastTets);
     if (!forecast.ok())
     {
       return forecast;
     }
-    reserveForNewPoints(forecastTets, state);
+    reserveForNewPoints(forecastTets, tetsNow, state);
 
     for (int color = 0; color < setup.numberOfColors; ++color)
     {
