@@ -408,8 +408,8 @@ Status checkForecastSize(const ColorLoopSetup& setup, const RefinementContext& c
   if (setup.method == RefinementMethod::Template && tetsBefore > 0 &&
     tetsNow <= setup.maximumNumberOfCells / 8)
   {
-    forecastTets = static_cast<std::int64_t>(
-      static_cast<double>(tetsNow) * static_cast<double>(tetsNow) / static_cast<double>(tetsBefore));
+    forecastTets = static_cast<std::int64_t>(static_cast<double>(tetsNow) *
+      static_cast<double>(tetsNow) / static_cast<double>(tetsBefore));
     return Status::success();
   }
   const std::int64_t partitions = static_cast<std::int64_t>(state.partitions.size());

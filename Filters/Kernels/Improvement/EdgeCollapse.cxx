@@ -239,7 +239,8 @@ bool Improver::collapseVertex(int a)
     return false;
   }
   sortUnique(candidates); // shortest first, ties by vertex: deterministic
-  std::vector<int>& ball = this->CollapseBall; // a copy: the collapse changes the incidence
+  // A copy of the ball: the collapse changes the incidence.
+  std::vector<int>& ball = this->CollapseBall;
   ball.assign(this->Incident[a].begin(), this->Incident[a].end());
   // The ball's measures before, taken once a candidate passes the length test: on the graded Big
   // cube most attempts that get this far fail it for every candidate (252,000 rejections for

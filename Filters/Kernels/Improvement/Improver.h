@@ -93,7 +93,8 @@ private:
   // looks at, so defined here to be inlined.
   bool isShort(int a, int b) const
   {
-    return shorterThanSize(squaredDistance(this->at(a), this->at(b)), this->sizeAt(a), this->sizeAt(b));
+    return shorterThanSize(
+      squaredDistance(this->at(a), this->at(b)), this->sizeAt(a), this->sizeAt(b));
   }
   // Whether an edge from v to one of the `count` vertices at `neighbours` is longer than
   // sqrt(2) h (never without a size field: then nothing is looked at).

@@ -340,8 +340,7 @@ Status buildGraphOfRuns(const std::vector<TetRun>& runs, int numberOfPartitions,
   return forEachRange(parallelFor, numberOfPartitions, rangeSize,
     [&](std::int64_t begin, std::int64_t end)
     {
-      std::vector<std::int64_t> next(
-        graph.offsets.begin() + begin, graph.offsets.begin() + end);
+      std::vector<std::int64_t> next(graph.offsets.begin() + begin, graph.offsets.begin() + end);
       const std::int64_t target = begin / rangeSize;
       for (std::int64_t source = 0; source < ranges; ++source)
       {
