@@ -27,13 +27,6 @@ Edge edgeOf(int v, int w)
   return v < w ? Edge{ v, w } : Edge{ w, v };
 }
 
-template <typename T>
-void sortUnique(std::vector<T>& values)
-{
-  std::sort(values.begin(), values.end());
-  values.erase(std::unique(values.begin(), values.end()), values.end());
-}
-
 bool holds(const Corners& corners, int v)
 {
   return std::find(corners.begin(), corners.end(), v) != corners.end();
@@ -238,7 +231,8 @@ bool Improver::collapseVertex(int a)
   {
     return false;
   }
-  sortUnique(candidates); // shortest first, ties by vertex: deterministic
+  // Shortest first, ties by vertex: deterministic. Each neighbour is listed once already.
+  std::sort(candidates.begin(), candidates.end());
   // A copy of the ball: the collapse changes the incidence.
   std::vector<int>& ball = this->CollapseBall;
   ball.assign(this->Incident[a].begin(), this->Incident[a].end());
