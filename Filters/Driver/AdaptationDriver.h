@@ -37,6 +37,9 @@ struct AdaptationSummary
   // already met the threshold or bound), which sets `refinementConverged`.
   int iterationsRun = 0;
   bool refinementConverged = false;
+  // Template passes: partitions not read again, a pass before having found nothing to split in
+  // them (refineMembers in ColorLoop.cxx).
+  std::int64_t skippedPartitionReads = 0;
   std::int64_t tetgenRetries = 0; // partition refinements whose first TetGen call failed
   std::int64_t tetgenWithoutQualityBound = 0; // of those, refined by TetGen without q
   std::int64_t tetgenRemeshed = 0; // partitions TetGen meshed anew from their kept faces (slivers)

@@ -76,6 +76,9 @@ struct AdaptationOptions
   // Delaunay: the sweep that meshes the slivers at former interfaces anew (RemeshSweep.h); off
   // only to measure what it does.
   bool remeshAcrossFormerInterfaces = true;
+  // Template: a partition a pass found nothing to split in is not read again while nothing
+  // changes it (ColorLoop.cxx); off only to check that skipping it changes nothing.
+  bool skipSettledPartitions = true;
 
   // Set when the mesh is one piece of a mesh spread over processes (the filter under MPI): face
   // diagonals then follow coordinates, which the processes sharing a face agree on, not ids.

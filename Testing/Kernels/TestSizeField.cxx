@@ -121,6 +121,47 @@ void test_refinement_to_a_graded_field()
   }
 }
 
+// Template passes skip the partitions an earlier pass found nothing to split in while nothing
+// has changed them: with a steep size field and coarsening (five passes) and in a refinement box
+// (four passes; the partitions far from it never split), the output is the one that reading them
+// again gives, and some reads were skipped.
+void test_settled_partitions_are_not_read_again()
+{
+  // Fine along x = 0.5 and, gradation allowing, coarse enough towards x = 0 and 1 for the
+  // partitions there to settle after a pass or two.
+  TetMesh steep = gradedCube(6);
+  for (PointId p = 0; p < steep.numberOfPoints(); ++p)
+  {
+    steep.sizes[p] = 0.03 + 0.6 * std::abs(steep.point(p)[0] - 0.5);
+  }
+  TetMesh boxed = gradedCube(6);
+  boxed.sizes.clear();
+  for (const TetMesh& input : { steep, boxed })
+  {
+    AdaptationOptions options;
+    options.numberOfIterations = 12;
+    options.numberOfPartitions = 256;
+    options.numberOfThreads = 2;
+    options.sizeGradation = 4;
+    if (input.sizes.empty())
+    {
+      options.refinementBox = "0,0,0,0.3,1,1";
+      options.edgeLengthFactor = 0.3;
+      options.numberOfIterations = 4;
+    }
+    AdaptationResult skipping, reading;
+    CHECK(adaptMesh(input, options, skipping).ok());
+    options.skipSettledPartitions = false;
+    CHECK(adaptMesh(input, options, reading).ok());
+    CHECK(skipping.summary.iterationsRun > 2);
+    CHECK(skipping.summary.skippedPartitionReads > 0);
+    CHECK_EQUAL(reading.summary.skippedPartitionReads, 0);
+    CHECK(cgmesh_test::identicalResults(skipping, reading));
+    CHECK(skipping.mesh.sizes == reading.mesh.sizes);
+    cgmesh_test::checkValidAndConserving(input, skipping.mesh);
+  }
+}
+
 // The edge measure counts every edge of the mesh once, whatever the schedule of its ranges: on
 // the graded cube refined and coarsened (irregular valences), against a set of all edges, with
 // some points outside the field (infinite size), whose edges do not count.
@@ -461,6 +502,7 @@ int main()
   test_coarsening_where_the_field_is_coarse();
   test_bad_size_fields_are_refused();
   test_refinement_regions_and_box();
+  test_settled_partitions_are_not_read_again();
   test_bad_selections_are_refused();
   return cgmesh_test::finish("TestSizeField");
 }
