@@ -488,6 +488,11 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
 void finalizeNewPoints(
   PartitionMesh& partition, PartitionRefinement& refinement, PointId firstGlobalId)
 {
+  refinement.newInterfacePoints.clear();
+  if (refinement.newPointSources.empty())
+  {
+    return; // it made no point, so every id it holds is global already
+  }
   auto globalId = [firstGlobalId](PointId id)
   {
     return finalId(id, firstGlobalId);
@@ -504,7 +509,6 @@ void finalizeNewPoints(
     entry.edge = EdgeKey::of(globalId(entry.edge.low), globalId(entry.edge.high));
     entry.vertex = globalId(entry.vertex);
   }
-  refinement.newInterfacePoints.clear();
   for (PointId& point : refinement.movedPoints)
   {
     point = globalId(point);
