@@ -195,6 +195,21 @@ void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshA
   addFieldValue(fieldData, "TotalSeconds", filter->GetLastTotalSeconds());
 }
 
+// Whether the input has cell arrays other than the one named `regionArray`.
+bool hasCellArraysBesides(vtkUnstructuredGrid* input, const std::string& regionArray)
+{
+  vtkCellData* cellData = input->GetCellData();
+  for (int a = 0; a < cellData->GetNumberOfArrays(); ++a)
+  {
+    const char* name = cellData->GetArrayName(a);
+    if (regionArray.empty() || !name || regionArray != name)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // The filter's parameters, with the progress and abort hooks of this run. Provenance is needed to
 // interpolate point data and to find the children of triangles.
 cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter,
@@ -202,6 +217,7 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter,
 {
   cgmesh::AdaptationOptions options = parameters;
   options.pointProvenance = input->GetPointData()->GetNumberOfArrays() > 0 || withTriangles;
+  options.cellDataByParent = withTriangles || hasCellArraysBesides(input, options.regionArrayName);
   options.keepBoundaryTriangulation = withTriangles;
   // The driver calls both hooks on the calling thread only.
   options.progress = [filter](double fraction, const char*)

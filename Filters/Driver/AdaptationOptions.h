@@ -92,6 +92,11 @@ struct AdaptationOptions
   // point data there is nothing to interpolate, and the merge skips locating moved points in the
   // input and expanding every new point's recipe.
   bool pointProvenance = true;
+  // Whether the output tets take cell data from their parents beyond the region ids (the input's
+  // other cell arrays): then a Delaunay tet's parent must be the input tet holding its centroid.
+  // Without such data, its parent is the input tet it descends from in TetGen, of the same
+  // partition and region, and nothing needs locating (RefinementContext::locateTetGenOutput).
+  bool cellDataByParent = true;
 
   // Called on the calling thread only: fraction in [0, 1], never decreasing, and the phase name.
   std::function<void(double fraction, const char* phase)> progress;

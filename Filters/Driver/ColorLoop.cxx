@@ -596,6 +596,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     context.refinement.sizes = state.sizes.empty() ? nullptr : &state.sizes;
     context.refinement.templates = setup.templates;
     context.refinement.orderCornersByCoordinates = setup.orderCornersByCoordinates;
+    context.refinement.locateTetGenOutput = options.pointProvenance || options.cellDataByParent;
     // Template children of good parents are good (FullSplitChildQuality): refinement measures the
     // others as it makes them and lists the poor ones, and improvement screens those alone. Short
     // edges have no such bound.

@@ -555,6 +555,37 @@ void test_parents_hold_the_centroids_wherever_walks_start()
   CHECK(onFaces < walked.partition.tets.size() / 10);
 }
 
+// Without point data, sizes or cell data beyond the regions, nothing TetGen returns is located in
+// the old tets: a new tet's parent is the input tet it descends from. The mesh, its regions and
+// the partition and colour of every tet are those of the run that locates; some parents differ,
+// each of its tet's region; and the output is the same for any thread count.
+void test_parents_by_descent_without_cell_data()
+{
+  const TetMesh input = threeRegionCube(8);
+  AdaptationOptions options = delaunayOptions(1, 1);
+  options.pointProvenance = false;
+  const AdaptationResult located = run(input, options);
+  options.cellDataByParent = false;
+  const AdaptationResult descended = run(input, options);
+  cgmesh_test::checkValidAndConserving(input, descended.mesh);
+  CHECK(descended.summary.tetgenPoints > 0);
+  CHECK(descended.mesh.tets == located.mesh.tets);
+  CHECK(descended.mesh.coordinates == located.mesh.coordinates);
+  CHECK(descended.mesh.regions == located.mesh.regions);
+  CHECK(descended.partitionOfCell == located.partitionOfCell);
+  CHECK(descended.colorOfCell == located.colorOfCell);
+  CHECK_EQUAL(descended.parentCell.size(), located.parentCell.size());
+  std::size_t differing = 0;
+  for (std::size_t t = 0; t < descended.parentCell.size() && t < located.parentCell.size(); ++t)
+  {
+    CHECK_EQUAL(input.regions[descended.parentCell[t]], descended.mesh.regions[t]);
+    differing += descended.parentCell[t] != located.parentCell[t];
+  }
+  CHECK(differing > 0);
+  options.numberOfThreads = 3;
+  CHECK(cgmesh_test::identicalResults(descended, run(input, options)));
+}
+
 void test_tetgen_time_limit_follows_the_forecast_output()
 {
   tetgenio in;
@@ -582,6 +613,7 @@ int main()
   test_bad_delaunay_options_are_refused();
   test_tampered_tetgen_output_is_refused();
   test_parents_hold_the_centroids_wherever_walks_start();
+  test_parents_by_descent_without_cell_data();
   test_tetgen_time_limit_follows_the_forecast_output();
   return cgmesh_test::finish("TestDelaunay");
 }

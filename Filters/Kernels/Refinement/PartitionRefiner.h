@@ -36,6 +36,11 @@ struct RefinementContext
   // When positive: the mean ratio below which the improvement after this pass works. Refinement
   // then lists the tets that may be below it (PartitionRefinement::tetsToScreen).
   double improvementTarget = 0;
+  // Delaunay: TetGen's new points get weights in the old tets (for point data) and its new tets
+  // the old tet holding their centroid as parent (for cell data). Where the run carries neither
+  // (nor sizes, which are interpolated like point data), nothing is located: a tet's parent is
+  // the old tet it descends from in TetGen.
+  bool locateTetGenOutput = true;
 };
 
 // Every child of a tet split into eight across its shortest octahedron diagonal has a mean ratio

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace cgmesh
 {
@@ -462,26 +463,62 @@ std::string TetGenSession::validate(
   return std::string();
 }
 
-std::size_t TetGenSession::walkStart(const tetgenio& out, int t, std::size_t cornerTet) const
+std::int64_t TetGenSession::ancestorOf(const tetgenio& out, int t) const
 {
   if (this->Remesh)
   {
-    return cornerTet; // no old tets behind the new ones: the tet at the tet's first corner
+    return -1; // no old tets behind the new ones
   }
-  // The old tet TetGen's tet descends from: in the FinFET's partitions it holds the centroid for
-  // 63% of the output tets, against a walk of 4.3 steps on average from the first corner's tet.
   const double ancestor = out.tetrahedronattributelist[static_cast<std::size_t>(t) * TetAttributes];
   return ancestor >= 0 && ancestor < static_cast<double>(this->Partition.tets.size())
-    ? static_cast<std::size_t>(ancestor)
-    : cornerTet;
+    ? static_cast<std::int64_t>(ancestor)
+    : -1;
+}
+
+std::size_t TetGenSession::walkStart(const tetgenio& out, int t, std::size_t cornerTet) const
+{
+  // The old tet TetGen's tet descends from: in the FinFET's partitions it holds the centroid for
+  // 63% of the output tets, against a walk of 4.3 steps on average from the first corner's tet.
+  // Meshing anew, the tet at the tet's first corner.
+  const std::int64_t ancestor = this->ancestorOf(out, t);
+  return ancestor >= 0 ? static_cast<std::size_t>(ancestor) : cornerTet;
+}
+
+template <typename LocatorOf>
+std::size_t TetGenSession::parentTet(const tetgenio& out, int t, int region,
+  const double centroid[3], std::size_t cornerTet, bool locating,
+  const LocatorOf& locatorOfOldTets) const
+{
+  // Without cell data to carry, the old tet TetGen's tet descends from will do: it lies in the
+  // same partition, so the PartitionId and ColorId it gives are the located one's, and in the
+  // same region (TetGen's cavities stop at the kept faces, region interfaces among them), which
+  // is checked.
+  const std::int64_t ancestor = this->ancestorOf(out, t);
+  if (!locating && ancestor >= 0 && this->regionOfTet(static_cast<std::size_t>(ancestor)) == region)
+  {
+    return static_cast<std::size_t>(ancestor);
+  }
+  return locatorOfOldTets().locateFrom(centroid, this->walkStart(out, t, cornerTet)).tet;
 }
 
 void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
   PartitionRefinement& refinement, DelaunayOutcome& outcome) const
 {
   const int inputPointCount = static_cast<int>(this->Numbering.passed);
-  TetLocator locator(this->Partition.tets, [this](PointId id) { return this->coordinatesOf(id); });
-  locator.buildFaceNeighbours(this->Partition.tets);
+  // Meshing anew leaves no old tet behind a new one, and sizes are interpolated like point data:
+  // then, or where the run carries point or cell data, everything new is located in the old tets.
+  const bool locating = this->Remesh || this->Context.sizes || this->Context.locateTetGenOutput;
+  std::unique_ptr<TetLocator> locator;
+  const auto locatorOfOldTets = [&]() -> const TetLocator&
+  {
+    if (!locator)
+    {
+      locator = std::make_unique<TetLocator>(
+        this->Partition.tets, [this](PointId id) { return this->coordinatesOf(id); });
+      locator->buildFaceNeighbours(this->Partition.tets);
+    }
+    return *locator;
+  };
 
   // The partition's tets: all of them, but for the cavities of other partitions that remeshing
   // fills too (and the points TetGen inserted there).
@@ -517,9 +554,18 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
       tetOfOutput.push_back(tetOfOutput.back());
       continue;
     }
+    coordinates.insert(coordinates.end(), out.pointlist + 3 * i, out.pointlist + 3 * i + 3);
+    idOfOutput.push_back(
+      -static_cast<PointId>(refinement.newPointSources.size() + sources.size() + 1));
+    if (!locating)
+    {
+      sources.push_back(PointSource{}); // read by nothing: the run carries no point data
+      tetOfOutput.push_back(tetOfOutput.back());
+      continue;
+    }
     // TetGen inserts points near the ones before them, often in the same old tet.
     const TetLocator::Location where =
-      locator.locateFrom(out.pointlist + 3 * i, tetOfOutput.back());
+      locatorOfOldTets().locateFrom(out.pointlist + 3 * i, tetOfOutput.back());
     PointSource source;
     for (int k = 0; k < 4; ++k)
     {
@@ -527,7 +573,6 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
       source.weights[k] = where.barycentric[k];
     }
     sources.push_back(source);
-    coordinates.insert(coordinates.end(), out.pointlist + 3 * i, out.pointlist + 3 * i + 3);
     if (this->Context.sizes)
     {
       double size = 0; // interpolated like the point's data
@@ -537,7 +582,6 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
       }
       sizes.push_back(size);
     }
-    idOfOutput.push_back(-static_cast<PointId>(refinement.newPointSources.size() + sources.size()));
     tetOfOutput.push_back(where.tet);
   }
 
@@ -562,7 +606,8 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
       { idOfOutput[c[0]], idOfOutput[c[1]], idOfOutput[c[2]], idOfOutput[c[3]] });
     refined.parentCells.push_back(
       this->Partition
-        .parentCells[locator.locateFrom(centroid, this->walkStart(out, t, tetOfOutput[c[0]])).tet]);
+        .parentCells[this->parentTet(out, t, regionOfOutput[static_cast<std::size_t>(t)], centroid,
+          tetOfOutput[c[0]], locating, locatorOfOldTets)]);
     if (!this->Partition.regions.empty())
     {
       refined.regions.push_back(regionOfOutput[static_cast<std::size_t>(t)]);
