@@ -392,6 +392,46 @@ void test_dual_graph_matches_a_face_map()
   CHECK(graph.offsets.back() > 0);
 }
 
+// A range of tets along an order, its graph made from its own faces, is the range's subgraph of
+// the whole mesh's dual graph, row by row in the same order: on the unstructured FinFET along its
+// Hilbert curve, ranges at the start, in the middle and at the end, and the whole mesh. A face
+// held by three tets links none of them when the range holds all three.
+void test_graph_of_positions_matches_the_subgraph()
+{
+  TetMesh finFet;
+  CHECK(generateFinFetWithTetGen(20000, finFet).ok());
+  TetMesh small;
+  CHECK(generateKuhnCube(2, small).ok());
+  const Face shared = sortedFace(small.tets[0].data(), 0);
+  small.tets.push_back({ shared[0], shared[1], shared[2], small.numberOfPoints() - 1 });
+  for (const TetMesh* mesh : { &finFet, &small })
+  {
+    std::vector<CellId> order;
+    CHECK(orderTetsAlongHilbertCurve(*mesh, order, ParallelFor(runSerially), 10).ok());
+    std::vector<CellId> positionOf(order.size());
+    for (std::size_t position = 0; position < order.size(); ++position)
+    {
+      positionOf[static_cast<std::size_t>(order[position])] = static_cast<CellId>(position);
+    }
+    DualGraph whole;
+    CHECK(buildDualGraph(mesh->tets, whole).ok());
+    const CellId n = mesh->numberOfTets();
+    std::vector<std::pair<CellId, CellId>> ranges = { { 0, n } };
+    if (mesh == &finFet)
+    {
+      ranges.insert(ranges.end(), { { 0, n / 3 }, { n / 3, 2 * n / 3 }, { 2 * n / 3, n } });
+    }
+    for (const auto& [begin, end] : ranges)
+    {
+      const DualGraph expected = subgraphOfPositions(whole, order, positionOf, begin, end);
+      const DualGraph graph = dualGraphOfPositions(mesh->tets, order, begin, end);
+      CHECK(graph.offsets == expected.offsets);
+      CHECK(graph.neighbours == expected.neighbours);
+      CHECK(expected.offsets.back() > 0);
+    }
+  }
+}
+
 // The chunk count: one chunk (plain METIS) below 400,000 tets or 32 partitions, one per 200,000
 // tets or 16 partitions above, at most 64.
 void test_curve_chunk_count()
@@ -679,6 +719,7 @@ int main()
   test_hilbert_partitions_are_equal_runs();
   test_distinct_faces_match_a_map();
   test_dual_graph_matches_a_face_map();
+  test_graph_of_positions_matches_the_subgraph();
   test_curve_chunk_count();
   test_curve_chunks_partition_inside_chunks();
   test_metis_worker_matches_in_process();

@@ -30,33 +30,19 @@ Status partitionInCurveChunks(const TetMesh& mesh, int numberOfPartitions, int c
     return count;
   }
   chunks = std::clamp(chunks, 1, numberOfPartitions);
-  DualGraph graph;
-  Status status = buildDualGraph(mesh.tets, graph, parallelFor);
-  if (weights)
+  if (chunks == 1)
   {
-    graph.vertexWeights = *weights;
+    DualGraph graph;
+    const Status status = buildDualGraph(mesh.tets, graph, parallelFor);
+    if (weights)
+    {
+      graph.vertexWeights = *weights;
+    }
+    return status.ok() ? partitionGraph(graph, numberOfPartitions, partitionOfCell) : status;
   }
-  if (status.ok() && chunks == 1)
-  {
-    return partitionGraph(graph, numberOfPartitions, partitionOfCell);
-  }
-  std::vector<CellId> order, positionOf(tetCount);
-  if (status.ok())
-  {
-    // Chunks of many thousand tets need no fine curve: 2^10 cells a side cost half the steps.
-    status = orderTetsAlongHilbertCurve(mesh, order, parallelFor, 10);
-  }
-  if (status.ok())
-  {
-    status = forEachRange(parallelFor, tetCount, IndicesPerCopyRange,
-      [&](std::int64_t begin, std::int64_t end)
-      {
-        for (CellId position = begin; position < end; ++position)
-        {
-          positionOf[order[position]] = position;
-        }
-      });
-  }
+  std::vector<CellId> order;
+  // Chunks of many thousand tets need no fine curve: 2^10 cells a side cost half the steps.
+  Status status = orderTetsAlongHilbertCurve(mesh, order, parallelFor, 10);
   if (!status.ok())
   {
     return status;
@@ -93,7 +79,18 @@ Status partitionInCurveChunks(const TetMesh& mesh, int numberOfPartitions, int c
       std::vector<int> local(static_cast<std::size_t>(end - begin), 0);
       if (parts > 1)
       {
-        const DualGraph chunkGraph = subgraphOfPositions(graph, order, positionOf, begin, end);
+        // Each chunk's graph from its own tets' faces: building the whole mesh's graph and
+        // taking the chunks' out of it, through scattered reads of its rows, took 0.42 s of the
+        // FinFET's 0.91 s of partitioning at one thread (its four chunks 0.12 s).
+        DualGraph chunkGraph = dualGraphOfPositions(mesh.tets, order, begin, end);
+        if (weights)
+        {
+          chunkGraph.vertexWeights.reserve(static_cast<std::size_t>(end - begin));
+          for (CellId position = begin; position < end; ++position)
+          {
+            chunkGraph.vertexWeights.push_back((*weights)[order[position]]);
+          }
+        }
         statusOfChunk[c] = partitionGraph(chunkGraph, parts, local);
       }
       for (CellId position = begin; position < end; ++position)

@@ -4,6 +4,8 @@
 #include "Core/FaceKey.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <tuple>
 
 namespace cgmesh
@@ -214,6 +216,44 @@ DualGraph subgraphOfPositions(const DualGraph& graph, const std::vector<CellId>&
     }
   }
   return sub;
+}
+
+DualGraph dualGraphOfPositions(
+  const TetList& tets, const std::vector<CellId>& order, CellId begin, CellId end)
+{
+  const std::size_t count = static_cast<std::size_t>(end - begin);
+  std::vector<PointId> corners(4 * count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Tet& tet = tets[static_cast<std::size_t>(order[begin + static_cast<CellId>(i)])];
+    std::copy(tet.begin(), tet.end(), corners.begin() + static_cast<std::ptrdiff_t>(4 * i));
+  }
+  // At most one neighbour across each of a tet's four faces.
+  std::vector<std::array<CellId, 4>> across(count);
+  std::vector<std::uint8_t> degree(count, 0);
+  forEachDistinctFace(corners.data(), count,
+    [&](const std::array<PointId, 3>&, std::size_t first, std::size_t second, std::size_t holders)
+    {
+      if (holders == 2 && first != second)
+      {
+        across[first][degree[first]++] = static_cast<CellId>(second);
+        across[second][degree[second]++] = static_cast<CellId>(first);
+      }
+    });
+  DualGraph graph;
+  graph.offsets.reserve(count + 1);
+  graph.neighbours.reserve(4 * count);
+  graph.offsets.push_back(0);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    auto first = across[i].begin();
+    auto last = first + degree[i];
+    // As buildDualGraph() lists them: by tet id.
+    std::sort(first, last, [&](CellId a, CellId b) { return order[begin + a] < order[begin + b]; });
+    graph.neighbours.insert(graph.neighbours.end(), first, last);
+    graph.offsets.push_back(static_cast<std::int64_t>(graph.neighbours.size()));
+  }
+  return graph;
 }
 
 VertexGroups groupVertices(const std::vector<int>& groupOf, int groups)

@@ -33,6 +33,14 @@ Status buildDualGraph(
 DualGraph subgraphOfPositions(const DualGraph& graph, const std::vector<CellId>& order,
   const std::vector<CellId>& positionOf, CellId begin, CellId end);
 
+// The dual graph of the tets at positions [begin, end) of `order` alone, numbered by position -
+// begin: what subgraphOfPositions() takes out of the whole mesh's dual graph (each row's
+// neighbours in the order of their tet ids), found from those tets' own faces without the whole
+// mesh's graph. No weights. Only on invalid input does it differ: a face held by three or more
+// tets, two of them in the range, links those two here (the graph stays symmetric).
+DualGraph dualGraphOfPositions(
+  const TetList& tets, const std::vector<CellId>& order, CellId begin, CellId end);
+
 // Vertices listed group by group, ascending within each: group g holds the positions
 // [groupStart[g], groupStart[g + 1]) of `order`, and `positionOf` inverts `order`, as
 // subgraphOfPositions() takes them.
