@@ -242,8 +242,7 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
       // FinFET with its size field (six passes, 1,024 partitions) 1,152 of the 6,144 reads,
       // most of them in the last pass: adapt 1.90 to 1.70 s at one thread, same output.
       char& nothingToSplit = (*iteration.nothingToSplit)[p];
-      if (setup.method == RefinementMethod::Template && nothingToSplit &&
-        iteration.options.skipSettledPartitions)
+      if (nothingToSplit && iteration.options.skipSettledPartitions) // templates alone set it
       {
         reports[i] = TaskReport();
         reports[i].skipped = true;
@@ -319,10 +318,7 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
       {
         return;
       }
-      if (iteration.nothingToSplit)
-      {
-        (*iteration.nothingToSplit)[p] = 0; // improvement may make long edges
-      }
+      (*iteration.nothingToSplit)[p] = 0; // improvement may make long edges
       PartitionPoints points{ &state.coordinates, &refinement.newCoordinates };
       if (iteration.setup.sizeField)
       {

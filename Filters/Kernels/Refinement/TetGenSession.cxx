@@ -475,19 +475,9 @@ std::int64_t TetGenSession::ancestorOf(const tetgenio& out, int t) const
     : -1;
 }
 
-std::size_t TetGenSession::walkStart(const tetgenio& out, int t, std::size_t cornerTet) const
-{
-  // The old tet TetGen's tet descends from: in the FinFET's partitions it holds the centroid for
-  // 63% of the output tets, against a walk of 4.3 steps on average from the first corner's tet.
-  // Meshing anew, the tet at the tet's first corner.
-  const std::int64_t ancestor = this->ancestorOf(out, t);
-  return ancestor >= 0 ? static_cast<std::size_t>(ancestor) : cornerTet;
-}
-
 template <typename LocatorOf>
-std::size_t TetGenSession::parentTet(const tetgenio& out, int t, int region,
-  const double centroid[3], std::size_t cornerTet, bool locating,
-  const LocatorOf& locatorOfOldTets) const
+std::size_t TetGenSession::parentTet(const tetgenio& out, int t, int region, std::size_t cornerTet,
+  bool locating, const LocatorOf& locatorOfOldTets) const
 {
   // Without cell data to carry, the old tet TetGen's tet descends from will do: it lies in the
   // same partition, so the PartitionId and ColorId it gives are the located one's, and in the
@@ -498,7 +488,20 @@ std::size_t TetGenSession::parentTet(const tetgenio& out, int t, int region,
   {
     return static_cast<std::size_t>(ancestor);
   }
-  return locatorOfOldTets().locateFrom(centroid, this->walkStart(out, t, cornerTet)).tet;
+  const int* c = out.tetrahedronlist + 4 * t;
+  double centroid[3] = { 0, 0, 0 };
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      centroid[axis] += 0.25 * out.pointlist[3 * c[k] + axis];
+    }
+  }
+  // The walk starts at the old tet TetGen's tet descends from: in the FinFET's partitions it
+  // holds the centroid for 63% of the output tets, against a walk of 4.3 steps on average from
+  // the first corner's tet, where it starts when meshing anew.
+  const std::size_t start = ancestor >= 0 ? static_cast<std::size_t>(ancestor) : cornerTet;
+  return locatorOfOldTets().locateFrom(centroid, start).tet;
 }
 
 void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
@@ -594,20 +597,10 @@ void TetGenSession::adoptOutput(const tetgenio& out, PartitionMesh& partition,
       continue;
     }
     const int* c = out.tetrahedronlist + 4 * t;
-    double centroid[3] = { 0, 0, 0 };
-    for (int k = 0; k < 4; ++k)
-    {
-      for (int axis = 0; axis < 3; ++axis)
-      {
-        centroid[axis] += 0.25 * out.pointlist[3 * c[k] + axis];
-      }
-    }
     refined.tets.push_back(
       { idOfOutput[c[0]], idOfOutput[c[1]], idOfOutput[c[2]], idOfOutput[c[3]] });
-    refined.parentCells.push_back(
-      this->Partition
-        .parentCells[this->parentTet(out, t, regionOfOutput[static_cast<std::size_t>(t)], centroid,
-          tetOfOutput[c[0]], locating, locatorOfOldTets)]);
+    refined.parentCells.push_back(this->Partition.parentCells[this->parentTet(out, t,
+      regionOfOutput[static_cast<std::size_t>(t)], tetOfOutput[c[0]], locating, locatorOfOldTets)]);
     if (!this->Partition.regions.empty())
     {
       refined.regions.push_back(regionOfOutput[static_cast<std::size_t>(t)]);

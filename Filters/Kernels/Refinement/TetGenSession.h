@@ -157,16 +157,13 @@ private:
   // The old tet output tet t descends from (the first attribute TetGen carried over), or -1 when
   // meshing anew or when the attribute names no old tet.
   std::int64_t ancestorOf(const tetgenio& out, int t) const;
-  // Where the walk to the old tet holding output tet t's centroid starts: the old tet it
-  // descends from when TetGen refined, else `cornerTet`.
-  std::size_t walkStart(const tetgenio& out, int t, std::size_t cornerTet) const;
-  // The old tet whose cell data output tet t (of `region`, centroid `centroid`) takes: the one
-  // holding its centroid, found from walkStart(); or, when not `locating`, the old tet it
-  // descends from if that is of its region. `locatorOfOldTets()` gives the locator, built on
-  // first need.
+  // The old tet whose cell data output tet t (of `region`) takes: the one holding its centroid,
+  // found by a walk from the old tet it descends from (meshing anew, from `cornerTet`, an old
+  // tet at its first corner); or, when not `locating`, the old tet it descends from if that is
+  // of its region. `locatorOfOldTets()` gives the locator, built on first need.
   template <typename LocatorOf>
-  std::size_t parentTet(const tetgenio& out, int t, int region, const double centroid[3],
-    std::size_t cornerTet, bool locating, const LocatorOf& locatorOfOldTets) const;
+  std::size_t parentTet(const tetgenio& out, int t, int region, std::size_t cornerTet,
+    bool locating, const LocatorOf& locatorOfOldTets) const;
 
   // The region of output tet t; false for a tet in a cavity of other partitions (remeshing only).
   bool regionOfOutputTet(const tetgenio& out, int t, int& region) const;
