@@ -48,30 +48,47 @@ public:
   // whatever `parallelFor` runs concurrently, so the maps are the same for any thread count.
   Status post(const std::vector<const Outbox*>& outboxes, const ParallelFor& parallelFor)
   {
-    // Each outbox's entries grouped by shard (a stable counting sort), then each shard fed from
-    // its group of every outbox.
-    std::vector<std::array<std::size_t, Shards + 1>> groupStart(outboxes.size());
-    std::vector<std::vector<const OutboxEntry*>> grouped(outboxes.size());
-    Status status = parallelFor(static_cast<std::int64_t>(outboxes.size()),
+    // One counting sort of every outbox's entries by shard into a single array: each outbox
+    // counts its entries per shard, the counts give every (shard, outbox) group its place, and the
+    // outboxes scatter their entries there; then each shard is fed from its stretch. With
+    // 65,536 partitions of 16 tets, a group array per outbox and a gathered copy per shard made
+    // two allocations per partition and colour and a second pass over the entries.
+    const std::size_t count = outboxes.size();
+    std::vector<std::array<std::size_t, Shards>> place(count); // counts, then each group's start
+    Status status = parallelFor(static_cast<std::int64_t>(count),
       [&](std::int64_t i)
       {
-        const Outbox& outbox = *outboxes[i];
-        std::array<std::size_t, Shards + 1>& start = groupStart[i];
-        start.fill(0);
-        for (const OutboxEntry& entry : outbox)
+        place[i].fill(0);
+        for (const OutboxEntry& entry : *outboxes[i])
         {
-          ++start[shardOf(entry.edge) + 1];
+          ++place[i][shardOf(entry.edge)];
         }
-        for (int s = 0; s < Shards; ++s)
+      });
+    if (!status.ok())
+    {
+      return status;
+    }
+    std::array<std::size_t, Shards + 1> shardStart{};
+    std::size_t total = 0;
+    for (int s = 0; s < Shards; ++s)
+    {
+      shardStart[s] = total;
+      for (std::size_t i = 0; i < count; ++i)
+      {
+        const std::size_t entries = place[i][s];
+        place[i][s] = total;
+        total += entries;
+      }
+    }
+    shardStart[Shards] = total;
+    std::vector<const OutboxEntry*> grouped(total);
+    status = parallelFor(static_cast<std::int64_t>(count),
+      [&](std::int64_t i)
+      {
+        std::array<std::size_t, Shards>& next = place[i];
+        for (const OutboxEntry& entry : *outboxes[i])
         {
-          start[s + 1] += start[s];
-        }
-        std::array<std::size_t, Shards> next;
-        std::copy(start.begin(), start.end() - 1, next.begin());
-        grouped[i].resize(outbox.size());
-        for (const OutboxEntry& entry : outbox)
-        {
-          grouped[i][next[shardOf(entry.edge)]++] = &entry;
+          grouped[next[shardOf(entry.edge)]++] = &entry;
         }
       });
     if (!status.ok())
@@ -82,19 +99,15 @@ public:
       [&](std::int64_t s)
       {
         EdgeMidpointMap& shard = this->Map[s];
-        std::vector<const OutboxEntry*> incoming;
-        for (std::size_t i = 0; i < grouped.size(); ++i)
-        {
-          incoming.insert(incoming.end(), grouped[i].begin() + groupStart[i][s],
-            grouped[i].begin() + groupStart[i][s + 1]);
-        }
-        shard.reserve(shard.size() + incoming.size());
+        const OutboxEntry* const* incoming = grouped.data() + shardStart[s];
+        const std::size_t entries = shardStart[s + 1] - shardStart[s];
+        shard.reserve(shard.size() + entries);
         // Each insertion's slot is fetched a few entries ahead: the shard is large, and with
         // partitions of a few tets (short runs per outbox) the inserts waited on memory in turn.
         constexpr std::size_t PrefetchDistance = 8;
-        for (std::size_t k = 0; k < incoming.size(); ++k)
+        for (std::size_t k = 0; k < entries; ++k)
         {
-          if (k + PrefetchDistance < incoming.size())
+          if (k + PrefetchDistance < entries)
           {
             __builtin_prefetch(shard.firstSlotOf(incoming[k + PrefetchDistance]->edge));
           }
