@@ -77,7 +77,8 @@ struct AdaptationOptions
   // only to measure what it does.
   bool remeshAcrossFormerInterfaces = true;
   // Template: a partition a pass found nothing to split in is not read again while nothing
-  // changes it (ColorLoop.cxx); off only to check that skipping it changes nothing.
+  // changes it, and a pass measures only the tets the pass before split (ColorLoop.cxx,
+  // refinePartition's `passedUnsplit`); off only to check that skipping them changes nothing.
   bool skipSettledPartitions = true;
 
   // Set when the mesh is one piece of a mesh spread over processes (the filter under MPI): face

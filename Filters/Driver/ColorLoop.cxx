@@ -46,6 +46,9 @@ struct IterationContext
   // Template refinement loops: the partitions unchanged since a pass found no edge to split in
   // them (see refineMembers).
   std::vector<char>* nothingToSplit = nullptr;
+  // Template refinement loops: per partition, which of its tets came through the last pass
+  // unsplit, unchanged since (refinePartition's `passedUnsplit`); empty where not known.
+  std::vector<std::vector<char>>* passedUnsplit = nullptr;
   // Every interface split the colours before the current one made in this iteration, by edge: a
   // partition heals from it what its processed neighbours split (see postSplitsOfColor).
   PostedSplits splitsOfEarlierColors = PostedSplits();
@@ -59,8 +62,11 @@ TaskReport refineOnePartition(
   PartitionRefinement& refinement = iteration.refinements[partition];
   if (iteration.setup.method == RefinementMethod::Template)
   {
-    report.status =
-      refinePartition(state.partitions[partition], iteration.refinement, received, refinement);
+    std::vector<char>* unsplit = iteration.passedUnsplit && iteration.options.skipSettledPartitions
+      ? &(*iteration.passedUnsplit)[partition]
+      : nullptr;
+    report.status = refinePartition(state.partitions[partition], iteration.refinement, received,
+      refinement, EdgeFilter(), nullptr, nullptr, unsplit);
   }
   else
   {
@@ -319,6 +325,10 @@ Status improveMembers(IterationContext& iteration, const std::vector<int>& membe
         return;
       }
       (*iteration.nothingToSplit)[p] = 0; // improvement may make long edges
+      if (iteration.passedUnsplit)
+      {
+        (*iteration.passedUnsplit)[p].clear(); // and moves and renews tets
+      }
       PartitionPoints points{ &state.coordinates, &refinement.newCoordinates };
       if (iteration.setup.sizeField)
       {
@@ -546,6 +556,8 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
   std::size_t pointsAtLastPass = 0;
   std::vector<char> awaitingImprovement(state.partitions.size(), 1); // none improved yet
   std::vector<char> nothingToSplit(state.partitions.size(), 0);
+  std::vector<std::vector<char>> passedUnsplit(
+    setup.method == RefinementMethod::Template ? state.partitions.size() : 0);
   state.improvementLeft.assign(state.partitions.size(), ImprovementLeft());
   // Its figures per partition, but not those of the interface rounds before the input's slivers
   // are meshed anew.
@@ -585,7 +597,7 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
     }
     IterationContext context{ setup, options, RefinementContext(),
       std::vector<PartitionRefinement>(state.partitions.size()), &awaitingImprovement,
-      &nothingToSplit };
+      &nothingToSplit, passedUnsplit.empty() ? nullptr : &passedUnsplit };
     context.refinement.coordinates = &state.coordinates;
     context.refinement.interfaceVertex = &interfaceVertex;
     context.refinement.squaredThreshold = setup.squaredThreshold;

@@ -1,6 +1,7 @@
 // Template refinement of a single tet: every split pattern tiles its parent with positive tets,
 // two tets sharing a face always triangulate it identically, and full splits keep 3/4 of their
 // parent's mean ratio, which lets refinement leave the children of good parents unscreened.
+// Passes that hand on the tets they left whole measure only the last pass's children.
 #include "Core/ConstrainedFaces.h"
 #include "Core/Geometry.h"
 #include "Core/TetQuality.h"
@@ -336,6 +337,103 @@ void test_full_split_children_keep_three_quarters()
   }
 }
 
+// Passes that hand on which tets came through unsplit (refinePartition's `passedUnsplit`) make
+// exactly the tets of passes that measure every tet, flag exactly the tets a pass left whole, and
+// do not measure a flagged tet again: one flagged on purpose despite its long edge stays whole.
+void test_passes_measure_only_what_the_last_pass_made()
+{
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> coordinate(0, 1);
+  PartitionMesh soup;
+  std::vector<double> coordinates;
+  while (soup.tets.size() < 3000)
+  {
+    double corners[4][3];
+    for (auto& corner : corners)
+    {
+      for (double& value : corner)
+      {
+        value = coordinate(random);
+      }
+    }
+    const double volume6 = signedVolume6(corners[0], corners[1], corners[2], corners[3]);
+    if (std::abs(volume6) < 1e-6)
+    {
+      continue;
+    }
+    const PointId first = static_cast<PointId>(coordinates.size() / 3);
+    for (int c : { 0, volume6 > 0 ? 1 : 2, volume6 > 0 ? 2 : 1, 3 })
+    {
+      coordinates.insert(coordinates.end(), corners[c], corners[c] + 3);
+    }
+    soup.tets.push_back({ first, first + 1, first + 2, first + 3 });
+    soup.parentCells.push_back(static_cast<CellId>(soup.tets.size() - 1));
+  }
+  const TemplateTable table;
+  struct Run
+  {
+    PartitionMesh mesh;
+    std::vector<double> coordinates;
+    std::vector<char> unsplit;
+  };
+  Run measuringAll{ soup, coordinates, {} }, skipping{ soup, coordinates, {} };
+  // One pass on `run`, its new points then given global ids after the existing ones.
+  const auto pass = [&table](
+                      Run& run, std::vector<char>* unsplit, std::vector<std::size_t>& origins)
+  {
+    const std::vector<char> noInterface(run.coordinates.size() / 3, 0);
+    RefinementContext context;
+    context.coordinates = &run.coordinates;
+    context.interfaceVertex = &noInterface;
+    context.squaredThreshold = 0.15 * 0.15;
+    context.templates = &table;
+    PartitionRefinement refinement;
+    CHECK(refinePartition(
+      run.mesh, context, PostedSplits(), refinement, EdgeFilter(), &origins, nullptr, unsplit)
+            .ok());
+    finalizeNewPoints(run.mesh, refinement, static_cast<PointId>(run.coordinates.size() / 3));
+    run.coordinates.insert(
+      run.coordinates.end(), refinement.newCoordinates.begin(), refinement.newCoordinates.end());
+  };
+  int passesSplitting = 0;
+  for (int p = 0; p < 6; ++p)
+  {
+    const PartitionMesh before = skipping.mesh;
+    std::vector<std::size_t> origins, ignored;
+    pass(measuringAll, nullptr, ignored);
+    pass(skipping, &skipping.unsplit, origins);
+    CHECK(skipping.mesh.tets == measuringAll.mesh.tets);
+    CHECK(skipping.coordinates == measuringAll.coordinates);
+    CHECK_EQUAL(skipping.unsplit.size(), skipping.mesh.tets.size());
+    std::vector<int> madeOf(before.tets.size(), 0); // tets made of each tet before
+    for (std::size_t origin : origins)
+    {
+      ++madeOf[origin];
+    }
+    std::size_t children = 0;
+    for (std::size_t t = 0; t < skipping.mesh.tets.size(); ++t)
+    {
+      const bool whole =
+        madeOf[origins[t]] == 1 && skipping.mesh.tets[t] == before.tets[origins[t]];
+      CHECK_EQUAL(skipping.unsplit[t] != 0, whole);
+      children += whole ? 0 : 1;
+    }
+    passesSplitting += children > 0 ? 1 : 0;
+  }
+  std::cout << passesSplitting << " of 6 passes split tets; " << skipping.mesh.tets.size()
+            << " tets after them\n";
+  CHECK(passesSplitting >= 3);
+
+  // A flagged tet is taken as whole without being measured.
+  Run flagged{ soup, coordinates, std::vector<char>(soup.tets.size(), 0) };
+  flagged.unsplit[0] = 1; // the first random tet has an edge over 0.15
+  std::vector<std::size_t> origins;
+  pass(flagged, &flagged.unsplit, origins);
+  CHECK(std::count(origins.begin(), origins.end(), 0u) == 1);
+  CHECK(flagged.mesh.tets[0] == soup.tets[0]);
+  CHECK(std::count(origins.begin(), origins.end(), 1u) > 1); // the second one split
+}
+
 // mostChildren() sizes refinement's output: it must bound every corner order's template and be
 // reached by one of them.
 void test_most_children_bounds_every_template()
@@ -485,5 +583,6 @@ int main()
   test_most_children_bounds_every_template();
   test_shared_face_agreement();
   test_full_split_children_keep_three_quarters();
+  test_passes_measure_only_what_the_last_pass_made();
   return cgmesh_test::finish("TestTemplates");
 }

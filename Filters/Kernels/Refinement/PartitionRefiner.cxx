@@ -319,7 +319,8 @@ std::int64_t predictTemplateTetCount(
 
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
   const PostedSplits& received, PartitionRefinement& refinement, const EdgeFilter& filter,
-  std::vector<std::size_t>* origins, ConstrainedFaceMarks* faceMarks)
+  std::vector<std::size_t>* origins, ConstrainedFaceMarks* faceMarks,
+  std::vector<char>* passedUnsplit)
 {
   try
   {
@@ -340,9 +341,17 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
     const std::size_t tetCount = partition.tets.size();
     std::vector<std::uint8_t> splitMasks(tetCount);
     std::size_t mostTets = 0, splitEdges = 0, sharedSplitEdges = 0; // counted once per tet
+    // Tets known to have no long edge are not measured: on the FinFET with its size field, six
+    // passes measured 23 M tets' edges for 1.8 M tets split, half of the refinement's time.
+    const bool knownUnsplit = passedUnsplit && passedUnsplit->size() == tetCount;
     for (std::size_t t = 0; t < tetCount; ++t)
     {
       const Tet& tet = partition.tets[t];
+      if (knownUnsplit && (*passedUnsplit)[t])
+      {
+        ++mostTets; // mask 0: the tet itself
+        continue;
+      }
       const int splitMask = session.splitMaskOf(tet, filter);
       splitMasks[t] = static_cast<std::uint8_t>(splitMask);
       mostTets += context.templates->mostChildren(splitMask);
@@ -378,6 +387,11 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
     if (faceMarks)
     {
       childMarks.reserve(mostTets);
+    }
+    std::vector<char> unsplit;
+    if (passedUnsplit)
+    {
+      unsplit.reserve(mostTets);
     }
     constexpr std::size_t PrefetchDistance = 8; // tets
     for (std::size_t t = 0; t < tetCount; ++t)
@@ -441,6 +455,10 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
         {
           childMarks.push_back((*faceMarks)[t]);
         }
+        if (passedUnsplit)
+        {
+          unsplit.push_back(1);
+        }
         continue;
       }
       const std::vector<LocalTet>& children = splitMask == 63
@@ -471,11 +489,19 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       {
         origins->insert(origins->end(), children.size(), t);
       }
+      if (passedUnsplit)
+      {
+        unsplit.insert(unsplit.end(), children.size(), 0);
+      }
     }
     partition = std::move(refined);
     if (faceMarks)
     {
       faceMarks->swap(childMarks);
+    }
+    if (passedUnsplit)
+    {
+      passedUnsplit->swap(unsplit);
     }
   }
   catch (const std::bad_alloc&)

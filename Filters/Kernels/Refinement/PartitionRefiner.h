@@ -106,10 +106,16 @@ Status findInterfaceVertices(const std::vector<PartitionMesh>& partitions, Point
 // provisional ids (see above). Each tet is replaced where it stands, by itself or by its children
 // one after another; with `origins`, each resulting tet's index in the partition before; with
 // `faceMarks` (one per tet), which faces of each resulting tet lie in constrained faces before.
+//
+// With `passedUnsplit`, passes of one filter over a partition skip what they already know: on
+// entry, either empty or one flag per tet, set where the tet came through the pass before
+// unsplit and nothing has changed its corners since (their positions and sizes decide its edges,
+// so none is long now); on return, one flag per resulting tet, set where it came through this
+// pass unsplit. A pass after the first then measures only the children the one before made.
 Status refinePartition(PartitionMesh& partition, const RefinementContext& context,
   const PostedSplits& received, PartitionRefinement& refinement,
   const EdgeFilter& filter = EdgeFilter(), std::vector<std::size_t>* origins = nullptr,
-  ConstrainedFaceMarks* faceMarks = nullptr);
+  ConstrainedFaceMarks* faceMarks = nullptr, std::vector<char>* passedUnsplit = nullptr);
 
 // Rewrites provisional ids of the partition's tets, outbox and new point sources into global ids
 // starting at `firstGlobalId`.
