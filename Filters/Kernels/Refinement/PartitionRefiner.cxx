@@ -394,20 +394,61 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
       unsplit.reserve(mostTets);
     }
     constexpr std::size_t PrefetchDistance = 8; // tets
+    std::size_t prefetched = 0; // the tets before it have had their posted splits prefetched
     for (std::size_t t = 0; t < tetCount; ++t)
     {
-      // The first tet prefetches for the first PrefetchDistance + 1 tets, every later one for the
-      // tet PrefetchDistance places ahead. The prefetch stays written out here: GCC drops calls
-      // to a function or lambda that does nothing but prefetch.
-      for (std::size_t ahead = t == 0 ? 0 : t + PrefetchDistance;
-           ahead <= t + PrefetchDistance && ahead < tetCount; ++ahead)
+      // Each tet prefetches for the tets up to PrefetchDistance places ahead not yet done: the
+      // first for the first PrefetchDistance + 1, most others for one. The prefetch stays written
+      // out here: GCC drops calls to a function or lambda that does nothing but prefetch.
+      for (; prefetched <= t + PrefetchDistance && prefetched < tetCount; ++prefetched)
       {
         const void* slots[6];
-        const int count = session.postedSlotsOf(partition.tets[ahead], splitMasks[ahead], slots);
+        const int count =
+          session.postedSlotsOf(partition.tets[prefetched], splitMasks[prefetched], slots);
         for (int k = 0; k < count; ++k)
         {
           __builtin_prefetch(slots[k]);
         }
+      }
+      // A run of tets that stay whole, with none to list, is copied at once: in the later passes
+      // of a size field most tets are.
+      if (splitMasks[t] == 0 && !listsTetsToScreen)
+      {
+        std::size_t end = t + 1;
+        while (end < tetCount && splitMasks[end] == 0)
+        {
+          ++end;
+        }
+        const auto from = [t](const auto& values)
+        {
+          return values.begin() + t;
+        };
+        const auto to = [end](const auto& values)
+        {
+          return values.begin() + end;
+        };
+        refined.tets.insert(refined.tets.end(), from(partition.tets), to(partition.tets));
+        refined.parentCells.insert(
+          refined.parentCells.end(), from(partition.parentCells), to(partition.parentCells));
+        if (hasRegions)
+        {
+          refined.regions.insert(
+            refined.regions.end(), from(partition.regions), to(partition.regions));
+        }
+        for (std::size_t whole = t; origins && whole < end; ++whole)
+        {
+          origins->push_back(whole);
+        }
+        if (faceMarks)
+        {
+          childMarks.insert(childMarks.end(), from(*faceMarks), to(*faceMarks));
+        }
+        if (passedUnsplit)
+        {
+          unsplit.insert(unsplit.end(), end - t, 1);
+        }
+        t = end - 1;
+        continue;
       }
       const Tet& tet = partition.tets[t];
       std::array<PointId, 10> vertices = { tet[0], tet[1], tet[2], tet[3] };
