@@ -238,17 +238,16 @@ void test_shared_face_agreement()
   CHECK_EQUAL(comparisons, 120 * 8 * 8 * 8);
 }
 
-// Random tets of every shape, slivers included, refined on their own: every child of a full split
-// keeps at least FullSplitChildQuality of its parent's mean ratio, and the bound is tight. With
-// an improvement target, refinement lists exactly the children under it (as improvement's
-// screening measures them), though it skips measuring the children the bound clears.
-void test_full_split_children_keep_three_quarters()
+// `count` separate tets with random corners in [low, 1]^3, each positively oriented and with
+// |six times its volume| of at least `smallestVolume6`; their corners are appended to
+// `coordinates`, four points per tet.
+PartitionMesh randomTetSoup(unsigned seed, std::size_t count, double low, double smallestVolume6,
+  std::vector<double>& coordinates)
 {
-  std::mt19937_64 random(11);
-  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> coordinate(low, 1);
   PartitionMesh soup;
-  std::vector<double> coordinates;
-  while (soup.tets.size() < 20000)
+  while (soup.tets.size() < count)
   {
     double corners[4][3];
     for (auto& corner : corners)
@@ -259,7 +258,7 @@ void test_full_split_children_keep_three_quarters()
       }
     }
     const double volume6 = signedVolume6(corners[0], corners[1], corners[2], corners[3]);
-    if (std::abs(volume6) < 1e-9)
+    if (std::abs(volume6) < smallestVolume6)
     {
       continue;
     }
@@ -271,6 +270,17 @@ void test_full_split_children_keep_three_quarters()
     soup.tets.push_back({ first, first + 1, first + 2, first + 3 });
     soup.parentCells.push_back(static_cast<CellId>(soup.tets.size() - 1));
   }
+  return soup;
+}
+
+// Random tets of every shape, slivers included, refined on their own: every child of a full split
+// keeps at least FullSplitChildQuality of its parent's mean ratio, and the bound is tight. With
+// an improvement target, refinement lists exactly the children under it (as improvement's
+// screening measures them), though it skips measuring the children the bound clears.
+void test_full_split_children_keep_three_quarters()
+{
+  std::vector<double> coordinates;
+  const PartitionMesh soup = randomTetSoup(11, 20000, -1, 1e-9, coordinates);
   const double target = 0.5;
   const TemplateTable table;
   const std::vector<char> noInterface(coordinates.size() / 3, 0);
@@ -342,33 +352,8 @@ void test_full_split_children_keep_three_quarters()
 // do not measure a flagged tet again: one flagged on purpose despite its long edge stays whole.
 void test_passes_measure_only_what_the_last_pass_made()
 {
-  std::mt19937_64 random(5);
-  std::uniform_real_distribution<double> coordinate(0, 1);
-  PartitionMesh soup;
   std::vector<double> coordinates;
-  while (soup.tets.size() < 3000)
-  {
-    double corners[4][3];
-    for (auto& corner : corners)
-    {
-      for (double& value : corner)
-      {
-        value = coordinate(random);
-      }
-    }
-    const double volume6 = signedVolume6(corners[0], corners[1], corners[2], corners[3]);
-    if (std::abs(volume6) < 1e-6)
-    {
-      continue;
-    }
-    const PointId first = static_cast<PointId>(coordinates.size() / 3);
-    for (int c : { 0, volume6 > 0 ? 1 : 2, volume6 > 0 ? 2 : 1, 3 })
-    {
-      coordinates.insert(coordinates.end(), corners[c], corners[c] + 3);
-    }
-    soup.tets.push_back({ first, first + 1, first + 2, first + 3 });
-    soup.parentCells.push_back(static_cast<CellId>(soup.tets.size() - 1));
-  }
+  const PartitionMesh soup = randomTetSoup(5, 3000, 0, 1e-6, coordinates);
   const TemplateTable table;
   struct Run
   {
