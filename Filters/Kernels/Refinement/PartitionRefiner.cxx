@@ -393,6 +393,18 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
     {
       unsplit.reserve(mostTets);
     }
+    // Lists the tet that goes to position `index` of the refined partition when its mean ratio is
+    // below the target: measured here, while its corners' coordinates are at hand, improvement
+    // screens it alone.
+    auto listIfPoor = [&](const Tet& tet, std::size_t index)
+    {
+      if (meanRatioBelow(session.coordinatesOf(tet[0]), session.coordinatesOf(tet[1]),
+            session.coordinatesOf(tet[2]), session.coordinatesOf(tet[3]),
+            context.improvementTarget))
+      {
+        refinement.tetsToScreen.push_back(index);
+      }
+    };
     constexpr std::size_t PrefetchDistance = 8; // tets
     std::size_t prefetched = 0; // the tets before it have had their posted splits prefetched
     for (std::size_t t = 0; t < tetCount; ++t)
@@ -410,14 +422,18 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
           __builtin_prefetch(slots[k]);
         }
       }
-      // A run of tets that stay whole, with none to list, is copied at once: in the later passes
-      // of a size field most tets are.
-      if (splitMasks[t] == 0 && !listsTetsToScreen)
+      // A run of tets that stay whole is copied at once: in the later passes of a size field
+      // most tets are.
+      if (splitMasks[t] == 0)
       {
         std::size_t end = t + 1;
         while (end < tetCount && splitMasks[end] == 0)
         {
           ++end;
+        }
+        for (std::size_t whole = t; listsTetsToScreen && whole < end; ++whole)
+        {
+          listIfPoor(partition.tets[whole], refined.tets.size() + (whole - t));
         }
         const auto from = [t](const auto& values)
         {
@@ -461,17 +477,6 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
             session.midpointOf(tet[TetEdgeCorners[e][0]], tet[TetEdgeCorners[e][1]]);
         }
       }
-      // Lists the tet about to be emitted when its mean ratio is below the target: measured
-      // here, while its corners' coordinates are at hand, improvement screens it alone.
-      auto listIfPoor = [&](const Tet& child)
-      {
-        if (meanRatioBelow(session.coordinatesOf(child[0]), session.coordinatesOf(child[1]),
-              session.coordinatesOf(child[2]), session.coordinatesOf(child[3]),
-              context.improvementTarget))
-        {
-          refinement.tetsToScreen.push_back(refined.tets.size());
-        }
-      };
       auto emit = [&](const Tet& child)
       {
         refined.tets.push_back(child);
@@ -481,27 +486,6 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
           refined.regions.push_back(partition.regions[t]);
         }
       };
-      if (splitMask == 0)
-      {
-        if (listsTetsToScreen)
-        {
-          listIfPoor(tet);
-        }
-        emit(tet);
-        if (origins)
-        {
-          origins->push_back(t);
-        }
-        if (faceMarks)
-        {
-          childMarks.push_back((*faceMarks)[t]);
-        }
-        if (passedUnsplit)
-        {
-          unsplit.push_back(1);
-        }
-        continue;
-      }
       const std::vector<LocalTet>& children = splitMask == 63
         ? context.templates->fullSplit(shortestDiagonal(session, vertices))
         : context.templates->partialSplit(splitMask,
@@ -518,7 +502,7 @@ Status refinePartition(PartitionMesh& partition, const RefinementContext& contex
           vertices[child[3]] };
         if (listsTetsToScreen && parentQuality < (isCorner ? cornersClearAt : allClearAt))
         {
-          listIfPoor(corners);
+          listIfPoor(corners, refined.tets.size());
         }
         emit(corners);
         if (faceMarks)
