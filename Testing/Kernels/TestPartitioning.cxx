@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <numeric>
@@ -520,13 +521,49 @@ void test_metis_worker_matches_in_process()
   DualGraph graph;
   CHECK(buildDualGraph(mesh.tets, graph).ok());
   WorkerPool workers(1);
-  for (int parts : { 2, 7, 64 })
+  // 256 parts of the 6,000 tets are cut by recursive bisection, the others by k-way.
+  for (int parts : { 2, 7, 64, 256 })
   {
     std::vector<int> here, there;
     CHECK(partitionGraphWithMetis(graph, parts, here, false).ok());
     CHECK(workers.partitionGraph(0, graph, parts, false, there).empty());
     CHECK(here == there);
   }
+}
+
+// Parts of a few dozen tets, connected parts not asked for: METIS bisects recursively. Every part
+// used and near the mean size, the same parts on a second call, and interfaces no longer than
+// those of k-way with connected parts (asked for, so k-way serves) by more than a tenth.
+void test_small_parts_are_bisected_as_well_as_cut_by_kway()
+{
+  TetMesh mesh;
+  CHECK(generateFinFetWithTetGen(20000, mesh).ok());
+  DualGraph graph;
+  CHECK(buildDualGraph(mesh.tets, graph).ok());
+  const int parts = static_cast<int>(mesh.numberOfTets() / 40);
+  std::vector<int> bisected, again, kway;
+  CHECK(partitionGraphWithMetis(graph, parts, bisected, false).ok());
+  CHECK(partitionGraphWithMetis(graph, parts, again, false).ok());
+  CHECK(partitionGraphWithMetis(graph, parts, kway, true).ok());
+  CHECK(bisected == again);
+  CHECK(bisected != kway);
+  checkCovers(bisected, parts);
+  auto cutFaces = [&](const std::vector<int>& partOf)
+  {
+    std::int64_t cut = 0;
+    for (std::size_t v = 0; v + 1 < graph.offsets.size(); ++v)
+    {
+      for (std::int64_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k)
+      {
+        cut += partOf[v] != partOf[static_cast<std::size_t>(graph.neighbours[k])];
+      }
+    }
+    return cut / 2;
+  };
+  std::printf("%d parts of %lld tets: %lld faces cut by bisection, %lld by k-way\n", parts,
+    static_cast<long long>(mesh.numberOfTets()), static_cast<long long>(cutFaces(bisected)),
+    static_cast<long long>(cutFaces(kway)));
+  CHECK(cutFaces(bisected) * 10 <= cutFaces(kway) * 11);
 }
 
 } // namespace
@@ -723,6 +760,7 @@ int main()
   test_curve_chunk_count();
   test_curve_chunks_partition_inside_chunks();
   test_metis_worker_matches_in_process();
+  test_small_parts_are_bisected_as_well_as_cut_by_kway();
   test_weighted_partitions_balance_weight();
   return cgmesh_test::finish("TestPartitioning");
 }

@@ -76,8 +76,23 @@ Status partitionGraphWithMetis(
   options[METIS_OPTION_SEED] = 1;
   // Contiguity is only possible for a connected graph (asking anyway makes METIS complain).
   options[METIS_OPTION_CONTIG] = contiguous && isConnected(graph) ? 1 : 0;
+  // Parts of a few dozen tets make k-way slow: it coarsens only down to 30 vertices per part
+  // and cuts that graph by recursive bisection before refining. Bisecting directly is faster
+  // there and its interfaces are as short (Delaunay on the Kuhn cube N=25, 2 threads: 4,096
+  // parts 1.38 -> 0.45 s of partitioning, 3.4% fewer tets; 1,024 parts 0.76 -> 0.32 s, 1.4% more
+  // tets; from about 180 tets per part on k-way is as fast and makes fewer tets). Bisection
+  // cannot promise connected parts, so it serves only where they are not asked for.
+  constexpr std::int64_t BisectBelowVerticesPerPart = 128;
+  const bool bisect = options[METIS_OPTION_CONTIG] == 0 &&
+    vertexTotal < BisectBelowVerticesPerPart * static_cast<std::int64_t>(parts);
   auto run = [&]()
   {
+    if (bisect)
+    {
+      return METIS_PartGraphRecursive(&vertexCount, &constraintCount, offsets.data(),
+        neighbours.data(), weights.empty() ? nullptr : weights.data(), nullptr, nullptr, &partCount,
+        nullptr, nullptr, options, &edgeCut, partition.data());
+    }
     return METIS_PartGraphKway(&vertexCount, &constraintCount, offsets.data(), neighbours.data(),
       weights.empty() ? nullptr : weights.data(), nullptr, nullptr, &partCount, nullptr, nullptr,
       options, &edgeCut, partition.data());
