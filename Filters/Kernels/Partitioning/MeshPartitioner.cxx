@@ -80,10 +80,13 @@ Status partitionGraphWithMetis(
   // and cuts that graph by recursive bisection before refining. Bisecting directly is faster
   // there and its interfaces are as short (Delaunay on the Kuhn cube N=25, 2 threads: 4,096
   // parts 1.38 -> 0.45 s of partitioning, 3.4% fewer tets; 1,024 parts 0.76 -> 0.32 s, 1.4% more
-  // tets; from about 180 tets per part on k-way is as fast and makes fewer tets). Bisection
-  // cannot promise connected parts, so it serves only where they are not asked for.
+  // tets; from about 180 tets per part on k-way is as fast and makes fewer tets). Only many
+  // parts make k-way slow; with few, its parts are kept (8 bisected parts of a 750-tet graded
+  // cube made TetGen abort on one of them). Bisection cannot promise connected parts, so it
+  // serves only where they are not asked for.
   constexpr std::int64_t BisectBelowVerticesPerPart = 128;
-  const bool bisect = options[METIS_OPTION_CONTIG] == 0 &&
+  constexpr int BisectFromParts = 256;
+  const bool bisect = options[METIS_OPTION_CONTIG] == 0 && parts >= BisectFromParts &&
     vertexTotal < BisectBelowVerticesPerPart * static_cast<std::int64_t>(parts);
   auto run = [&]()
   {
