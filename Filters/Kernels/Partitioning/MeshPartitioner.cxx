@@ -78,14 +78,14 @@ Status partitionGraphWithMetis(
   options[METIS_OPTION_CONTIG] = contiguous && isConnected(graph) ? 1 : 0;
   // Parts of a few dozen tets make k-way slow: it coarsens only down to 30 vertices per part
   // and cuts that graph by recursive bisection before refining. Bisecting directly is faster
-  // there and its interfaces are as short (Delaunay on the Kuhn cube N=25, 2 threads: 4,096
-  // parts 1.38 -> 0.45 s of partitioning, 3.4% fewer tets; 1,024 parts 0.76 -> 0.32 s, 1.4% more
-  // tets; from about 180 tets per part on k-way is as fast and makes fewer tets). Only many
-  // parts make k-way slow; with few, its parts are kept (8 bisected parts of a 750-tet graded
-  // cube made TetGen abort on one of them). Bisection cannot promise connected parts, so it
-  // serves only where they are not asked for.
+  // there and cuts about as well (Delaunay on the Kuhn cube N=25, 2 threads: 1,024 parts 0.76 ->
+  // 0.32 s of partitioning, 1.4% more tets; 4,096 parts, whose second level asks for 64 parts of
+  // about 1,465 tets at a time, 1.38 -> 0.45 s, 3.4% fewer tets; from about 180 tets per part on
+  // k-way is as fast and makes fewer tets). Below 16 parts k-way is quick anyway and its parts
+  // are kept (8 bisected parts of a 750-tet graded cube made TetGen abort on one of them).
+  // Bisection cannot promise connected parts, so it serves only where they are not asked for.
   constexpr std::int64_t BisectBelowVerticesPerPart = 128;
-  constexpr int BisectFromParts = 256;
+  constexpr int BisectFromParts = 16;
   const bool bisect = options[METIS_OPTION_CONTIG] == 0 && parts >= BisectFromParts &&
     vertexTotal < BisectBelowVerticesPerPart * static_cast<std::int64_t>(parts);
   auto run = [&]()
