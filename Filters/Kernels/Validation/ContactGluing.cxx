@@ -78,8 +78,21 @@ Status coincidentPairs(const TetMesh& mesh, const std::vector<PointId>& used, co
               for (int dz = from[2]; dz <= to[2]; ++dz)
               {
                 const Cell neighbour = { cell[0] + dx, cell[1] + dy, cell[2] + dz };
-                auto at = std::lower_bound(
-                  buckets.begin(), buckets.end(), std::make_pair(neighbour, PointId(0)));
+                // The point's own cell, the only one for most points, is the run of equal cells
+                // around it: found by stepping back, not by a search over all buckets.
+                auto at = buckets.begin() + i;
+                if (dx == 0 && dy == 0 && dz == 0)
+                {
+                  while (at != buckets.begin() && (at - 1)->first == cell)
+                  {
+                    --at;
+                  }
+                }
+                else
+                {
+                  at = std::lower_bound(
+                    buckets.begin(), buckets.end(), std::make_pair(neighbour, PointId(0)));
+                }
                 for (; at != buckets.end() && at->first == neighbour; ++at)
                 {
                   const PointId q = at->second;
