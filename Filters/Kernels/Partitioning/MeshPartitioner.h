@@ -15,8 +15,9 @@ namespace cgmesh
 
 // METIS k-way on `graph` into `parts` parts, or its recursive bisection into 16 or more parts of
 // fewer than 128 vertices when connected parts are not asked for; with `contiguous`, connected
-// parts when the graph is connected. Deterministic for a given graph (fixed seed), but METIS draws from the
-// C library's process-wide random generator: two calls must never overlap in one process.
+// parts when the graph is connected. Deterministic for a given graph (fixed seed), but METIS
+// draws from the C library's process-wide random generator: two calls must never overlap in one
+// process.
 Status partitionGraphWithMetis(
   const DualGraph& graph, int parts, std::vector<int>& partOfVertex, bool contiguous = true);
 
