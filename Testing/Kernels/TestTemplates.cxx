@@ -238,6 +238,19 @@ void test_shared_face_agreement()
   CHECK_EQUAL(comparisons, 120 * 8 * 8 * 8);
 }
 
+// Template refinement over `coordinates` with the given interface flags: edges longer than
+// `threshold` split.
+RefinementContext templateContext(const std::vector<double>& coordinates,
+  const std::vector<char>& interfaceVertex, double threshold, const TemplateTable& templates)
+{
+  RefinementContext context;
+  context.coordinates = &coordinates;
+  context.interfaceVertex = &interfaceVertex;
+  context.squaredThreshold = threshold * threshold;
+  context.templates = &templates;
+  return context;
+}
+
 // `count` separate tets with random corners in [low, 1]^3, each positively oriented and with
 // |six times its volume| of at least `smallestVolume6`; their corners are appended to
 // `coordinates`, four points per tet.
@@ -287,11 +300,7 @@ void test_full_split_children_keep_three_quarters()
   // Every edge split, then only edges longer than 1: full and partial splits side by side.
   for (double threshold : { 0.0, 1.0 })
   {
-    RefinementContext context;
-    context.coordinates = &coordinates;
-    context.interfaceVertex = &noInterface;
-    context.squaredThreshold = threshold * threshold;
-    context.templates = &table;
+    RefinementContext context = templateContext(coordinates, noInterface, threshold, table);
     context.improvementTarget = target;
     PartitionMesh refined = soup;
     PartitionRefinement refinement;
@@ -367,11 +376,7 @@ void test_passes_measure_only_what_the_last_pass_made()
                       Run& run, std::vector<char>* unsplit, std::vector<std::size_t>& origins)
   {
     const std::vector<char> noInterface(run.coordinates.size() / 3, 0);
-    RefinementContext context;
-    context.coordinates = &run.coordinates;
-    context.interfaceVertex = &noInterface;
-    context.squaredThreshold = 0.15 * 0.15;
-    context.templates = &table;
+    const RefinementContext context = templateContext(run.coordinates, noInterface, 0.15, table);
     PartitionRefinement refinement;
     CHECK(refinePartition(
       run.mesh, context, PostedSplits(), refinement, EdgeFilter(), &origins, nullptr, unsplit)
@@ -479,11 +484,8 @@ void test_face_marks_follow_the_children()
   }
   const TemplateTable templates;
   const std::vector<char> interfaceVertex(cube.coordinates.size() / 3, 0);
-  RefinementContext context;
-  context.coordinates = &cube.coordinates;
-  context.interfaceVertex = &interfaceVertex;
-  context.squaredThreshold = 0.04 * 0.04;
-  context.templates = &templates;
+  const RefinementContext context =
+    templateContext(cube.coordinates, interfaceVertex, 0.04, templates);
   const PostedSplits noSplits;
   PartitionRefinement refinement;
   ConstrainedFaceMarks marks;
