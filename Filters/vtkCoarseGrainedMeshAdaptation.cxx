@@ -32,6 +32,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -229,6 +230,47 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter,
     return filter->CheckAbort();
   };
   return options;
+}
+
+// The box widget's box [origin, origin + length] as RefinementBox's text "x0,y0,z0,x1,y1,z1",
+// written with 17 significant digits so that it reads back as the same doubles; or an error
+// naming the properties when the box is not one or a RefinementBox text gives a box too.
+std::string refinementBoxOfWidget(
+  const double origin[3], const double length[3], const std::string& boxText, std::string& box)
+{
+  const auto join = [](const double* values, int count)
+  {
+    std::string text;
+    for (int i = 0; i < count; ++i)
+    {
+      char number[32];
+      std::snprintf(number, sizeof(number), "%.17g", values[i]);
+      text += (i > 0 ? "," : "") + std::string(number);
+    }
+    return text;
+  };
+  if (!boxText.empty())
+  {
+    return "RefinementBoxEnabled and RefinementBox '" + boxText +
+      "' both give a refinement box; switch RefinementBoxEnabled off or empty RefinementBox";
+  }
+  double corners[6];
+  bool valid = true;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    corners[axis] = origin[axis];
+    corners[3 + axis] = origin[axis] + length[axis];
+    valid = valid && length[axis] >= 0 && std::isfinite(corners[axis]) &&
+      std::isfinite(corners[3 + axis]);
+  }
+  if (!valid)
+  {
+    return "The refinement box of RefinementBoxOrigin (" + join(origin, 3) +
+      ") and RefinementBoxLength (" + join(length, 3) +
+      ") is not a box: every value must be finite and no length negative";
+  }
+  box = join(corners, 6);
+  return std::string();
 }
 
 // Forwards the driver's warnings; fallback warnings beyond the first few are summed up.
@@ -731,6 +773,19 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
 
   cgmesh::AdaptationOptions options =
     makeOptions(this, this->Internals->Parameters, run.input, run.withTriangles);
+  if (this->RefinementBoxEnabled)
+  {
+    // The same on every process: no exchange needed.
+    std::string box;
+    const std::string error = refinementBoxOfWidget(
+      this->RefinementBoxOrigin, this->RefinementBoxLength, options.refinementBox, box);
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< error << ".");
+      return 0;
+    }
+    options.refinementBox = box;
+  }
   if (group)
   {
     const std::string unsupported =
@@ -791,4 +846,9 @@ void vtkCoarseGrainedMeshAdaptation::PrintSelf(ostream& os, vtkIndent indent)
          << "\n";
     }
   }
+  os << indent << "RefinementBoxEnabled: " << this->RefinementBoxEnabled << "\n";
+  os << indent << "RefinementBoxOrigin: " << this->RefinementBoxOrigin[0] << ", "
+     << this->RefinementBoxOrigin[1] << ", " << this->RefinementBoxOrigin[2] << "\n";
+  os << indent << "RefinementBoxLength: " << this->RefinementBoxLength[0] << ", "
+     << this->RefinementBoxLength[1] << ", " << this->RefinementBoxLength[2] << "\n";
 }

@@ -170,6 +170,24 @@ public:
 
   ///@{
   /**
+   * The refinement box as ParaView's box widget gives it. With RefinementBoxEnabled (default off),
+   * only tets whose bounding box meets [RefinementBoxOrigin, RefinementBoxOrigin +
+   * RefinementBoxLength] are refined, exactly as RefinementBox "x0,y0,z0,x1,y1,z1" would refine
+   * them (and so only with the Template method). The lengths must be finite and not negative.
+   * The two ways are exclusive: a run with RefinementBoxEnabled and a RefinementBox text fails.
+   * Not in the parameter table: the command line has --refine-box.
+   */
+  vtkSetMacro(RefinementBoxEnabled, bool);
+  vtkGetMacro(RefinementBoxEnabled, bool);
+  vtkBooleanMacro(RefinementBoxEnabled, bool);
+  vtkSetVector3Macro(RefinementBoxOrigin, double);
+  vtkGetVector3Macro(RefinementBoxOrigin, double);
+  vtkSetVector3Macro(RefinementBoxLength, double);
+  vtkGetVector3Macro(RefinementBoxLength, double);
+  ///@}
+
+  ///@{
+  /**
    * Any parameter by its property name (as in the table). A numeric parameter is clamped to its
    * range; a Choice (Method, ColoringAlgorithm) is its index, a Boolean 0 or 1. Setting an unknown
    * name, or a number to RegionArrayName, is an error and changes nothing.
@@ -353,6 +371,10 @@ protected:
   // The parameters' values, kept as the driver's options.
   class vtkInternals;
   vtkInternals* Internals;
+
+  bool RefinementBoxEnabled = false;
+  double RefinementBoxOrigin[3] = { 0, 0, 0 };
+  double RefinementBoxLength[3] = { 1, 1, 1 };
 
 private:
   vtkCoarseGrainedMeshAdaptation(const vtkCoarseGrainedMeshAdaptation&) = delete;

@@ -1,6 +1,7 @@
 // Error paths and properties of vtkCoarseGrainedMeshAdaptation: non-tetrahedral input, a missing
 // region array, partitioning by region without one, empty input, ParaView's "None" region choice,
-// defaults, clamping (improvement passes included), the colouring setters and PrintSelf.
+// defaults, clamping (improvement passes included), the colouring setters, PrintSelf, and the box
+// widget's properties against the same box as text.
 #include "FilterTestSupport.h"
 
 #include "vtkCellData.h"
@@ -15,6 +16,7 @@
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -257,6 +259,72 @@ void test_sizeArrays()
     "Delaunay with a size field: " << delaunay.Messages->AllMessages);
 }
 
+// The box widget's properties refine exactly as the same box given as RefinementBox text does,
+// and only inside it. Both ways at once, a negative length, a non-finite corner and the Delaunay
+// method are errors that name what is wrong, give no output and leave the input as it was.
+void test_refinementBoxWidget()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(6);
+  const vtkIdType inputCells = input->GetNumberOfCells();
+  const vtkMTimeType inputTime = input->GetMTime();
+  FilterRun whole(input);
+  whole.update();
+  FilterRun text(input);
+  text.Filter->SetRefinementBox("0.25,0,0,0.5,1,0.5");
+  text.update();
+  FilterRun widget(input);
+  CGMESH_CHECK(!widget.Filter->GetRefinementBoxEnabled() &&
+      widget.Filter->GetRefinementBoxOrigin()[0] == 0 &&
+      widget.Filter->GetRefinementBoxLength()[2] == 1,
+    "box widget defaults");
+  widget.Filter->RefinementBoxEnabledOn();
+  widget.Filter->SetRefinementBoxOrigin(0.25, 0, 0);
+  widget.Filter->SetRefinementBoxLength(0.25, 1, 0.5);
+  widget.update();
+  std::string difference;
+  CGMESH_CHECK(
+    whole.Messages->Errors == 0 && text.Messages->Errors == 0 && widget.Messages->Errors == 0,
+    "box runs failed: " << text.Messages->AllMessages << widget.Messages->AllMessages);
+  CGMESH_CHECK(widget.outputCells() > inputCells && widget.outputCells() < whole.outputCells(),
+    "the widget's box refined " << widget.outputCells() << " cells of " << inputCells
+                                << " (everywhere: " << whole.outputCells() << ")");
+  CGMESH_CHECK(
+    cgmesh_test::identicalGrids(text.Filter->GetOutput(), widget.Filter->GetOutput(), difference),
+    "the widget's box and the same box as text differ: " << difference);
+
+  struct BadBox
+  {
+    const char* text;
+    double origin[3], length[3];
+    bool delaunay;
+    const char* expected;
+  };
+  const double nan = std::nan("");
+  const BadBox cases[] = { { "0,0,0,1,1,1", { 0, 0, 0 }, { 1, 1, 1 }, false, "both give" },
+    { "", { 0, 0, 0 }, { 0.5, -0.1, 1 }, false,
+      "RefinementBoxLength (0.5,-0.10000000000000001,1)" },
+    { "", { nan, 0, 0 }, { 1, 1, 1 }, false, "RefinementBoxOrigin (nan,0,0)" },
+    { "", { 0, 0, 0 }, { 1, 1, 1 }, true, "Template method only" } };
+  for (const BadBox& bad : cases)
+  {
+    FilterRun run(input);
+    run.Filter->SetRefinementBox(bad.text);
+    run.Filter->RefinementBoxEnabledOn();
+    run.Filter->SetRefinementBoxOrigin(bad.origin);
+    run.Filter->SetRefinementBoxLength(bad.length);
+    if (bad.delaunay)
+    {
+      run.Filter->SetMethodToDelaunay();
+    }
+    run.update();
+    CGMESH_CHECK(run.Messages->Errors > 0 && run.outputCells() == 0 &&
+        run.Messages->AllMessages.find(bad.expected) != std::string::npos,
+      "bad box (" << bad.expected << "): " << run.Messages->AllMessages);
+  }
+  CGMESH_CHECK(input->GetNumberOfCells() == inputCells && input->GetMTime() == inputTime,
+    "the box runs changed their input");
+}
+
 void test_emptyInput()
 {
   vtkNew<vtkUnstructuredGrid> input;
@@ -365,6 +433,7 @@ int main()
   test_partitionByRegionWithoutRegionArray();
   test_regionArrayChoices();
   test_sizeArrays();
+  test_refinementBoxWidget();
   test_emptyInput();
   test_abort();
   test_defaultsAndClamping();

@@ -1,6 +1,7 @@
 // The parameter table against its readers: the ParaView XML (names, commands, property types,
-// defaults, ranges, enumeration entries), the filter (defaults and clamps) and the colouring
-// registry (choice names). Argument: the server-manager XML file.
+// defaults, ranges, enumeration entries; besides, the box widget's properties), the filter
+// (defaults and clamps) and the colouring registry (choice names). Argument: the server-manager
+// XML file.
 #include "AdaptationOptions.h"
 #include "Coloring/PartitionColoring.h"
 #include "FilterTestSupport.h"
@@ -167,6 +168,66 @@ vtkXMLDataElement* findNamed(vtkXMLDataElement* element, const std::string& name
   return nullptr;
 }
 
+// The box widget's properties, which only the GUI and scripts set (the command line has
+// --refine-box): a switch and two 3-vectors, the vectors shown by ParaView's InteractiveBox
+// widget as its Position and Scale. They are taken out of `properties`, which then holds the
+// table's.
+void checkBoxWidget(vtkXMLDataElement* proxy, std::map<std::string, vtkXMLDataElement*>& properties)
+{
+  const struct
+  {
+    const char* name;
+    const char* tag;
+    int elements;
+    const char* defaults;
+    const char* widgetFunction;
+  } expected[] = { { "RefinementBoxEnabled", "IntVectorProperty", 1, "0", nullptr },
+    { "RefinementBoxOrigin", "DoubleVectorProperty", 3, "0 0 0", "Position" },
+    { "RefinementBoxLength", "DoubleVectorProperty", 3, "1 1 1", "Scale" } };
+  vtkXMLDataElement* widget = nullptr;
+  for (int i = 0; i < proxy->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* element = proxy->GetNestedElement(i);
+    const char* panel = element->GetAttribute("panel_widget");
+    widget = panel && std::string(panel) == "InteractiveBox" ? element : widget;
+  }
+  CGMESH_CHECK(widget != nullptr, "no InteractiveBox property group in the XML");
+  for (const auto& property : expected)
+  {
+    const auto found = properties.find(property.name);
+    CGMESH_CHECK(found != properties.end(), property.name << ": not in the XML");
+    if (found == properties.end())
+    {
+      continue;
+    }
+    vtkXMLDataElement* element = found->second;
+    int elements = 0;
+    element->GetScalarAttribute("number_of_elements", elements);
+    const char* defaults = element->GetAttribute("default_values");
+    CGMESH_CHECK(std::string(element->GetName()) == property.tag && elements == property.elements &&
+        defaults && std::string(defaults) == property.defaults,
+      property.name << ": " << element->GetName() << " of " << elements << " elements, default "
+                    << (defaults ? defaults : "(none)"));
+    CGMESH_CHECK(
+      std::string(element->GetAttribute("command")) == "Set" + std::string(property.name),
+      property.name << ": XML command " << element->GetAttribute("command"));
+    if (property.widgetFunction && widget)
+    {
+      bool linked = false;
+      for (int i = 0; i < widget->GetNumberOfNestedElements(); ++i)
+      {
+        const char* name = widget->GetNestedElement(i)->GetAttribute("name");
+        const char* function = widget->GetNestedElement(i)->GetAttribute("function");
+        linked = linked ||
+          (name && function && std::string(name) == property.name &&
+            std::string(function) == property.widgetFunction);
+      }
+      CGMESH_CHECK(linked, property.name << ": not the box widget's " << property.widgetFunction);
+    }
+    properties.erase(found);
+  }
+}
+
 void checkXml(const char* fileName)
 {
   vtkNew<vtkXMLDataParser> parser;
@@ -189,6 +250,7 @@ void checkXml(const char* fileName)
       properties[element->GetAttribute("name")] = element;
     }
   }
+  checkBoxWidget(proxy, properties);
   CGMESH_CHECK(properties.size() == cgmesh::parameterTable().size(),
     "the XML has " << properties.size() << " parameter properties, the table "
                    << cgmesh::parameterTable().size());

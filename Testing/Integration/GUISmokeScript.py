@@ -1,6 +1,7 @@
 """Run by the ParaView GUI (paraview --script=...) in the GUI smoke test: loads the plugin,
 applies the filter to the FinFET, shows it coloured by ColorId in the GUI's render view, saves a
-screenshot and writes the output cell count. Parameters come from CGMESH_GUI_* environment
+screenshot and writes the output cell count; then applies it again with a refinement box set
+through the box widget's properties and writes that cell count and the box. Parameters come from CGMESH_GUI_* environment
 variables because --script passes no arguments; the file named by CGMESH_GUI_DONE is written
 last, telling the test driver that the GUI has done its work."""
 import os
@@ -43,7 +44,28 @@ ResetCamera(view)
 Render(view)
 SaveScreenshot(os.environ["CGMESH_GUI_SCREENSHOT"], view, ImageResolution=[1024, 768])
 
+# The refinement box placed through the box widget's properties (the lower x half of the
+# device), left as the active source so that the Properties panel builds the box widget.
+mesh_bounds = mesh.GetDataInformation().GetBounds()
+boxed = CoarseGrainedMeshAdaptation(Input=mesh)  # noqa: F821 (defined by LoadPlugin)
+boxed.RegionArrayName = "Material"
+boxed.NumberOfPartitions = 64
+boxed.EdgeLengthFactor = 0.5
+boxed.NumberOfThreads = 1
+boxed.RefinementBoxEnabled = 1
+origin = [mesh_bounds[0], mesh_bounds[2], mesh_bounds[4]]
+length = [(mesh_bounds[1] - mesh_bounds[0]) / 2, mesh_bounds[3] - mesh_bounds[2],
+          mesh_bounds[5] - mesh_bounds[4]]
+boxed.RefinementBoxOrigin = origin
+boxed.RefinementBoxLength = length
+boxed.UpdatePipeline()
+SetActiveSource(boxed)
+Render(view)
+
 with open(os.environ["CGMESH_GUI_COUNT"], "w") as count_file:
     count_file.write("%d\n" % refined.GetDataInformation().GetNumberOfCells())
+    # The box as the command line's --refine-box takes it: the same doubles (repr round-trips).
+    count_file.write("%d %s\n" % (boxed.GetDataInformation().GetNumberOfCells(), ",".join(
+        repr(value) for value in origin + [o + l for o, l in zip(origin, length)])))
 with open(os.environ["CGMESH_GUI_DONE"], "w") as done_file:
     done_file.write("done\n")

@@ -1,6 +1,7 @@
 """GUI smoke test: the real ParaView GUI on a private Xvfb runs GUISmokeScript.py (loads the
-plugin, refines the FinFET, saves a screenshot, writes the output cell count). The screenshot must
-not be blank and the count must equal that of the command line with the same parameters.
+plugin, refines the FinFET, saves a screenshot, writes the output cell count; refines it again in
+a box set through the box widget's properties). The screenshot must not be blank and the counts
+must equal those of the command line with the same parameters (the box as --refine-box).
 
 The GUI gets a private HOME and XDG_CONFIG_HOME with ShowWelcomeDialog=0, so that neither the
 user's settings nor the modal welcome dialog get in the way. It does not exit by itself after
@@ -21,12 +22,13 @@ from image_checks import check_not_blank, start_xvfb, stop
 SETTINGS = "[General]\nGeneralSettings.ShowWelcomeDialog=0\nShowWelcomeDialog=0\n"
 
 
-def command_line_cell_count(options):
+def command_line_cell_count(options, extra=()):
     stats = os.path.join(options.scratch, "cli-stats.json")
     subprocess.run([options.cgmesh, "refine", options.data,
                     os.path.join(options.scratch, "cli-refined.vtu"), "--region-array", "Material",
                     "--partitions", "64", "--edge-length-factor", "0.5", "--threads", "1",
-                    "--stats", stats], check=True, stdout=subprocess.DEVNULL, timeout=300)
+                    "--stats", stats] + list(extra), check=True, stdout=subprocess.DEVNULL,
+                   timeout=300)
     with open(stats) as stats_file:
         return json.load(stats_file)["output"]["cells"]
 
@@ -90,12 +92,19 @@ def main():
         return 1
     error = check_not_blank(files["screenshot"])
     with open(files["count"]) as count_file:
-        gui_cells = int(count_file.read())
+        gui_cells = int(count_file.readline())
+        gui_box_cells, box = count_file.readline().split()
+        gui_box_cells = int(gui_box_cells)
     cli_cells = command_line_cell_count(options)
-    print("output cells: GUI %d, command line %d" % (gui_cells, cli_cells))
+    cli_box_cells = command_line_cell_count(options, ["--refine-box", box])
+    print("output cells: GUI %d, command line %d; in the box widget's box %s: GUI %d, command "
+          "line %d" % (gui_cells, cli_cells, box, gui_box_cells, cli_box_cells))
     if gui_cells != cli_cells:
         error = error or "the GUI's filter gave %d cells, the command line %d" % (gui_cells,
                                                                                  cli_cells)
+    if gui_box_cells != cli_box_cells or not cli_cells > gui_box_cells > cli_cells // 8:
+        error = error or ("in the box the GUI's filter gave %d cells, the command line %d (%d "
+                          "without the box)" % (gui_box_cells, cli_box_cells, cli_cells))
     if error:
         print(error, file=sys.stderr)
         return 1

@@ -1,6 +1,7 @@
 """Run with pvbatch: loads the built CoarseGrainedMesher plugin through paraview.simple and runs
 the filter on a tetrahedralized Wavelet, checking counts and arrays, with the colouring chosen by
-its label in the drop-down; then the Delaunay method, chosen by its label, on a small cube."""
+its label in the drop-down; then the Delaunay method, chosen by its label, on a small cube, and the
+refinement box set through the box widget's properties."""
 import argparse
 import sys
 
@@ -44,6 +45,30 @@ def test_delaunay():
     check(refined.GetFieldData().GetArray("VolumeBound").GetValue(0) > 0, "VolumeBound not > 0")
     check(refined.GetPointData().GetArray("RTData") is not None, "Delaunay: point data lost")
     print("Delaunay: %d -> %d cells" % (source.GetNumberOfCells(), refined.GetNumberOfCells()))
+
+
+def test_refinement_box_widget():
+    """The box widget's properties start at the input's bounds (their domains) and refine as
+    the same box given as RefinementBox text does."""
+    cube = Tetrahedralize(Input=Wavelet(WholeExtent=[0, 6, 0, 6, 0, 6]))
+    cube.UpdatePipeline()  # the domains read the input's bounds, as in the GUI after Apply
+    widget = CoarseGrainedMeshAdaptation(Input=cube)  # noqa: F821 (from LoadPlugin)
+    check(widget.RefinementBoxEnabled == 0, "RefinementBoxEnabled default")
+    check(list(widget.RefinementBoxOrigin) == [0.0, 0.0, 0.0]
+          and list(widget.RefinementBoxLength) == [6.0, 6.0, 6.0],
+          "box widget defaults: origin %s, length %s (input bounds 0..6)"
+          % (list(widget.RefinementBoxOrigin), list(widget.RefinementBoxLength)))
+    widget.RefinementBoxEnabled = 1
+    widget.RefinementBoxOrigin = [0.0, 0.0, 0.0]
+    widget.RefinementBoxLength = [2.0, 6.0, 6.0]
+    widget.NumberOfPartitions = 8
+    text = CoarseGrainedMeshAdaptation(Input=cube)  # noqa: F821 (from LoadPlugin)
+    text.RefinementBox = "0,0,0,2,6,6"
+    text.NumberOfPartitions = 8
+    counts = [servermanager.Fetch(proxy).GetNumberOfCells() for proxy in (cube, widget, text)]
+    check(counts[0] < counts[1] < 8 * counts[0] and counts[1] == counts[2],
+          "box widget: %d -> %d cells, as text %d" % tuple(counts))
+    print("box widget: %d -> %d cells (as text: %d)" % tuple(counts))
 
 
 def main():
@@ -95,6 +120,7 @@ def main():
           "a text diagnostic in the field data without Diagnostics")
 
     test_delaunay()
+    test_refinement_box_widget()
     if FAILURES:
         print("%d checks failed" % len(FAILURES), file=sys.stderr)
         return 1
