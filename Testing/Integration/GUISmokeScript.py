@@ -1,9 +1,9 @@
 """Run by the ParaView GUI (paraview --script=...) in the GUI smoke test: loads the plugin,
 applies the filter to the FinFET, shows it coloured by ColorId in the GUI's render view, saves a
 screenshot and writes the output cell count; then applies it again with a refinement box set
-through the box widget's properties and writes that cell count and the box. Parameters come from CGMESH_GUI_* environment
-variables because --script passes no arguments; the file named by CGMESH_GUI_DONE is written
-last, telling the test driver that the GUI has done its work."""
+through the box widget's properties and writes that cell count and the box. Parameters come from
+CGMESH_GUI_* environment variables because --script passes no arguments; the file named by
+CGMESH_GUI_DONE is written last, telling the test driver that the GUI has done its work."""
 import os
 
 from paraview.simple import (Clip, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction,
