@@ -234,9 +234,10 @@ cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter,
 
 // The box widget's box [origin, origin + length] as RefinementBox's text "x0,y0,z0,x1,y1,z1",
 // written with 17 significant digits so that it reads back as the same doubles; or an error
-// naming the properties when the box is not one or a RefinementBox text gives a box too.
-std::string refinementBoxOfWidget(
-  const double origin[3], const double length[3], const std::string& boxText, std::string& box)
+// naming the properties when the box is not one, a RefinementBox text gives a box too, or the
+// method is not Template.
+std::string refinementBoxOfWidget(const double origin[3], const double length[3],
+  const cgmesh::AdaptationOptions& options, std::string& box)
 {
   const auto join = [](const double* values, int count)
   {
@@ -249,9 +250,14 @@ std::string refinementBoxOfWidget(
     }
     return text;
   };
-  if (!boxText.empty())
+  if (options.method != cgmesh::RefinementMethod::Template)
   {
-    return "RefinementBoxEnabled and RefinementBox '" + boxText +
+    return "RefinementBoxEnabled: the refinement box works with the Template method only; switch "
+           "it off for the Delaunay method";
+  }
+  if (!options.refinementBox.empty())
+  {
+    return "RefinementBoxEnabled and RefinementBox '" + options.refinementBox +
       "' both give a refinement box; switch RefinementBoxEnabled off or empty RefinementBox";
   }
   double corners[6];
@@ -777,8 +783,8 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   {
     // The same on every process: no exchange needed.
     std::string box;
-    const std::string error = refinementBoxOfWidget(
-      this->RefinementBoxOrigin, this->RefinementBoxLength, options.refinementBox, box);
+    const std::string error =
+      refinementBoxOfWidget(this->RefinementBoxOrigin, this->RefinementBoxLength, options, box);
     if (!error.empty())
     {
       vtkErrorMacro(<< error << ".");

@@ -304,7 +304,9 @@ void test_refinementBoxWidget()
     { "", { 0, 0, 0 }, { 0.5, -0.1, 1 }, false,
       "RefinementBoxLength (0.5,-0.10000000000000001,1)" },
     { "", { nan, 0, 0 }, { 1, 1, 1 }, false, "RefinementBoxOrigin (nan,0,0)" },
-    { "", { 0, 0, 0 }, { 1, 1, 1 }, true, "Template method only" } };
+    { "", { 0, 0, 0 }, { 1, 1, 1 }, true,
+      "RefinementBoxEnabled: the refinement box works with "
+      "the Template method only" } };
   for (const BadBox& bad : cases)
   {
     FilterRun run(input);
