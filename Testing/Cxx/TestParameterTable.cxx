@@ -192,6 +192,14 @@ void checkBoxWidget(vtkXMLDataElement* proxy, std::map<std::string, vtkXMLDataEl
     widget = panel && std::string(panel) == "InteractiveBox" ? element : widget;
   }
   CGMESH_CHECK(widget != nullptr, "no InteractiveBox property group in the XML");
+  // With an Input in its group, ParaView's box widget takes Position and Scale relative to the
+  // input's bounds (as Transform does) and draws a box the filter does not refine.
+  for (int i = 0; widget && i < widget->GetNumberOfNestedElements(); ++i)
+  {
+    const char* function = widget->GetNestedElement(i)->GetAttribute("function");
+    CGMESH_CHECK(!function || std::string(function) != "Input",
+      "the box widget's group holds Input: the drawn box would be relative to the input's bounds");
+  }
   for (const auto& property : expected)
   {
     const auto found = properties.find(property.name);
