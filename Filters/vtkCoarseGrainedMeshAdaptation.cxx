@@ -4,6 +4,7 @@
 #include "cgmeshDistributed.h"
 #include "cgmeshMaterialLabels.h"
 #include "cgmeshPointData.h"
+#include "cgmeshRunFieldData.h"
 #include "cgmeshTetQuality.h"
 #include "cgmeshTriangleCells.h"
 #include "cgmeshVTKConversion.h"
@@ -13,23 +14,18 @@
 #include "ParallelFor.h"
 
 #include "vtkCellData.h"
-#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
-#include "vtkLongArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -60,141 +56,6 @@ constexpr std::size_t MaximumFallbackWarnings = 20;
 
 // Share of the progress bar given to adaptMesh; the rest covers array transfer and quality.
 constexpr double AdaptationProgressShare = 0.85;
-
-void addFieldValue(vtkFieldData* fieldData, const char* name, double value)
-{
-  vtkNew<vtkDoubleArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fieldData->AddArray(array);
-}
-
-void addFieldValue(vtkFieldData* fieldData, const char* name, int value)
-{
-  vtkNew<vtkIntArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fieldData->AddArray(array);
-}
-
-void addFieldString(vtkFieldData* fieldData, const char* name, const char* value)
-{
-  vtkNew<vtkStringArray> array;
-  array->SetName(name);
-  array->InsertNextValue(value);
-  fieldData->AddArray(array);
-}
-
-// One tuple per colour.
-void addColorPopulation(
-  vtkFieldData* fieldData, const char* name, const std::vector<std::int64_t>& countPerColor)
-{
-  // A plain 64-bit long array: legacy files name a vtkIdTypeArray's type "vtkIdType", which other
-  // readers (meshio) do not know.
-  vtkNew<vtkLongArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(static_cast<vtkIdType>(countPerColor.size()));
-  for (size_t color = 0; color < countPerColor.size(); ++color)
-  {
-    array->SetValue(static_cast<vtkIdType>(color), static_cast<long>(countPerColor[color]));
-  }
-  fieldData->AddArray(array);
-}
-
-// The field data some readers refuse (string arrays, an array that may be empty): only with
-// Diagnostics on.
-void addTextDiagnostics(const cgmesh::AdaptationSummary& result,
-  vtkCoarseGrainedMeshAdaptation* filter, vtkFieldData* fieldData)
-{
-  addFieldString(fieldData, "Method", filter->GetMethodName());
-  addFieldString(fieldData, "ColoringAlgorithm", filter->GetColoringAlgorithmName());
-  vtkNew<vtkIntArray> fallbackPartitions; // one tuple per fallback, in refinement order
-  fallbackPartitions->SetName("FallbackPartitions");
-  for (const int partition : result.fallbackPartitions)
-  {
-    fallbackPartitions->InsertNextValue(partition);
-  }
-  fieldData->AddArray(fallbackPartitions);
-}
-
-void addFieldData(const cgmesh::AdaptationSummary& result, vtkCoarseGrainedMeshAdaptation* filter,
-  vtkFieldData* fieldData)
-{
-  addFieldValue(fieldData, "NumberOfColors", result.numberOfColors);
-  addFieldValue(fieldData, "NumberOfPartitions", result.plan.partitions);
-  addFieldValue(fieldData, "NumberOfThreads", result.plan.threads);
-  addFieldValue(fieldData, "EdgeLengthThreshold", result.plan.edgeLengthThreshold);
-  addFieldValue(fieldData, "MethodIndex", filter->GetMethod());
-  addFieldValue(fieldData, "VolumeBound", result.plan.volumeBound);
-  addFieldValue(fieldData, "DelaunayFallbacks", static_cast<double>(result.delaunayFallbacks));
-  addFieldValue(fieldData, "TetGenPoints", static_cast<double>(result.tetgenPoints));
-  addFieldValue(fieldData, "IterationsRun", result.iterationsRun);
-  addFieldValue(fieldData, "RefinementConverged", result.refinementConverged ? 1 : 0);
-  addFieldValue(fieldData, "TetGenRetries", static_cast<double>(result.tetgenRetries));
-  addFieldValue(
-    fieldData, "TetGenWithoutQualityBound", static_cast<double>(result.tetgenWithoutQualityBound));
-  addFieldValue(fieldData, "TetGenRemeshed", static_cast<double>(result.tetgenRemeshed));
-  addFieldValue(fieldData, "SweepRemeshedBoxes", static_cast<double>(result.sweepRemeshedBoxes));
-  addFieldValue(fieldData, "SweepDroppedPoints", static_cast<double>(result.sweepDroppedPoints));
-  addFieldValue(fieldData, "SweepRemeshFailures", static_cast<double>(result.sweepRemeshFailures));
-  addFieldValue(fieldData, "InputRemeshedBoxes", static_cast<double>(result.inputRemeshedBoxes));
-  addFieldValue(fieldData, "InputDroppedPoints", static_cast<double>(result.inputDroppedPoints));
-  addFieldValue(fieldData, "InputRemeshFailures", static_cast<double>(result.inputRemeshFailures));
-  addFieldValue(fieldData, "ColoringAlgorithmIndex", filter->GetColoringAlgorithm());
-  // The partitioner used: Automatic resolved to METIS or Hilbert.
-  addFieldValue(fieldData, "PartitionerIndex", static_cast<int>(result.plan.partitioner));
-  if (result.plan.sizeField)
-  {
-    addFieldValue(fieldData, "EdgesWithinSizeBounds", result.edgeSizes.shareWithinBounds);
-    vtkNew<vtkLongArray> histogram; // edges by length / h, bins split at 1/2, 1/sqrt2, 1, sqrt2, 2
-    histogram->SetName("EdgeSizeRatioHistogram");
-    for (const std::int64_t count : result.edgeSizes.histogram)
-    {
-      histogram->InsertNextValue(static_cast<long>(count));
-    }
-    fieldData->AddArray(histogram);
-  }
-  if (filter->GetDiagnostics())
-  {
-    addTextDiagnostics(result, filter, fieldData);
-  }
-  addColorPopulation(fieldData, "PartitionsPerColor", result.partitionsPerColor);
-  addColorPopulation(fieldData, "CellsPerColor", result.cellsPerColor);
-  addFieldValue(fieldData, "ColorBalance", result.colorBalance);
-  addFieldValue(fieldData, "EdgeRemovals", static_cast<double>(result.edgeRemovals));
-  addFieldValue(fieldData, "EdgeCollapses", static_cast<double>(result.edgeCollapses));
-  addFieldValue(fieldData, "FaceSwaps", static_cast<double>(result.faceSwaps));
-  addFieldValue(fieldData, "VertexMoves", static_cast<double>(result.vertexMoves));
-  // Per-partition task times and the colouring: the data for makespan models of the colour loop.
-  vtkNew<vtkDoubleArray> taskSeconds; // entry iteration * NumberOfPartitions + partition
-  taskSeconds->SetName("PartitionTaskSeconds");
-  for (const double seconds : result.partitionTaskSeconds)
-  {
-    taskSeconds->InsertNextValue(seconds);
-  }
-  fieldData->AddArray(taskSeconds);
-  vtkNew<vtkIntArray> colorOfPartition;
-  colorOfPartition->SetName("ColorOfPartition");
-  for (const int color : result.colorOfPartition)
-  {
-    colorOfPartition->InsertNextValue(color);
-  }
-  fieldData->AddArray(colorOfPartition);
-  // One array per phase ("PrepareSeconds", "PartitionSeconds", ...), then the filter's own.
-  for (int phase = 0; phase < static_cast<int>(cgmesh::Phase::Count); ++phase)
-  {
-    std::string name = cgmesh::phaseName(static_cast<cgmesh::Phase>(phase));
-    name[0] = static_cast<char>(std::toupper(name[0]));
-    addFieldValue(
-      fieldData, (name + "Seconds").c_str(), result.seconds[static_cast<cgmesh::Phase>(phase)]);
-  }
-  addFieldValue(fieldData, "InputSeconds", filter->GetLastInputSeconds());
-  addFieldValue(fieldData, "OutputSeconds", filter->GetLastOutputSeconds());
-  addFieldValue(fieldData, "QualitySeconds", filter->GetLastQualitySeconds());
-  addFieldValue(fieldData, "TotalSeconds", filter->GetLastTotalSeconds());
-}
 
 // Whether the input has cell arrays other than the one named `regionArray`.
 bool hasCellArraysBesides(vtkUnstructuredGrid* input, const std::string& regionArray)
@@ -691,11 +552,13 @@ void vtkCoarseGrainedMeshAdaptation::NumberAcrossProcesses(const cgmesh::Process
     }
   }
   vtkFieldData* fieldData = output->GetFieldData();
-  addFieldValue(fieldData, "NumberOfProcesses", group.size());
-  addFieldValue(fieldData, "ProcessSharedPoints", static_cast<double>(numbering.sharedPoints));
-  addFieldValue(fieldData, "ProcessExchangeBytes", static_cast<double>(numbering.exchangedBytes));
-  addFieldValue(fieldData, "ProcessNumberingSeconds", numberingSeconds);
-  addFieldValue(fieldData, "GhostCellSeconds", ghostStopwatch.seconds());
+  cgmesh::addFieldValue(fieldData, "NumberOfProcesses", group.size());
+  cgmesh::addFieldValue(
+    fieldData, "ProcessSharedPoints", static_cast<double>(numbering.sharedPoints));
+  cgmesh::addFieldValue(
+    fieldData, "ProcessExchangeBytes", static_cast<double>(numbering.exchangedBytes));
+  cgmesh::addFieldValue(fieldData, "ProcessNumberingSeconds", numberingSeconds);
+  cgmesh::addFieldValue(fieldData, "GhostCellSeconds", ghostStopwatch.seconds());
 }
 
 //------------------------------------------------------------------------------
@@ -826,7 +689,7 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   if (hasPiece)
   {
     this->Internals->LastTotalSeconds = stopwatch.seconds();
-    addFieldData(run.result.summary, this, output->GetFieldData());
+    cgmesh::addRunFieldData(run.result.summary, this, output->GetFieldData());
   }
   this->UpdateProgress(1.0);
   return 1;
