@@ -482,6 +482,12 @@ void printStatisticsTable(const RefineStatistics& statistics, std::ostream& stre
                   : " (partitions " + joinValues(statistics.fallbackPartitions, " ") + ")")
            << "\n";
   }
+  else if (statistics.inputRemeshedBoxes > 0 || statistics.inputRemeshFailures > 0)
+  {
+    // A sliver-laden input meshed anew before the templates (InputImprovement.h).
+    stream << std::setw(24) << "input remeshed boxes" << statistics.inputRemeshedBoxes << " ("
+           << statistics.inputRemeshFailures << " failed)\n";
+  }
   printImprovement(statistics, stream);
   printWarningCounts(statistics, stream);
   printQualitySummaries(statistics, stream);

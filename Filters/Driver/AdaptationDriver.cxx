@@ -247,11 +247,12 @@ std::unique_ptr<WorkerPool> startWorkers(
   return nullptr;
 }
 
-// TetGen calls go to the worker of the calling thread (or to the first, serialised, on request).
+// TetGen calls go to the worker of the calling thread (or to the first, serialised, on request
+// or when the pool has one worker).
 void attachTetGen(const AdaptationOptions& options, ColorLoopSetup& setup,
-  AdaptationSummary& summary, WorkerPool* pool, std::mutex& serialTetGen)
+  AdaptationSummary& summary, WorkerPool* pool, std::mutex& serialTetGen, bool oneWorker = false)
 {
-  const bool serialize = options.serializeTetGen;
+  const bool serialize = options.serializeTetGen || oneWorker;
   summary.concurrentTetGen = !serialize && summary.plan.threads > 1;
   setup.runTetGen = [pool, serialize, &serialTetGen](
                       int partition, const tetgenio& in, const std::string& switches, tetgenio& out)
@@ -310,6 +311,32 @@ Status adoptMergedMesh(
       "removed " + std::to_string(unused) + " points that no tetrahedron uses" });
   }
   return status;
+}
+
+// Meshes a sliver-laden input anew first (remeshInputFirst); any other input is left as it is.
+// Template runs start their TetGen worker only here, for such an input: one, as there is one call.
+Status remeshIfSliverLaden(const AdaptationOptions& options,
+  const std::vector<int>& partitionOfCell, PartitionGraph& graph, ColorLoopSetup& setup,
+  AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter,
+  std::unique_ptr<WorkerPool>& workers, std::mutex& serialTetGen, bool& remeshed)
+{
+  bool sliverLaden = false;
+  const Status status = countSlivers(setup.threads, state, sliverLaden);
+  if (!status.ok() || !sliverLaden)
+  {
+    return status;
+  }
+  if (!setup.runTetGen)
+  {
+    const bool started = workers != nullptr; // the curve chunks' METIS workers, one per thread
+    if (!started)
+    {
+      workers = std::make_unique<WorkerPool>(1);
+    }
+    attachTetGen(options, setup, summary, workers.get(), serialTetGen, !started);
+  }
+  return remeshInputFirst(
+    options, partitionOfCell, graph, setup, state, summary, reporter, remeshed);
 }
 
 // Refinement (and improvement inside partitions), then the sweeps across former interfaces.
@@ -386,17 +413,19 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   {
     attachTetGen(options, setup, summary, workers.get(), serialTetGen);
   }
-  if (improvesInputFirst(options, summary.plan))
+  bool remeshedInput = false;
+  if (remeshesInputFirst(options, summary.plan))
   {
-    status = improveInputFirst(options, partitionOfCell, graph, setup, state, summary, reporter);
+    status = remeshIfSliverLaden(options, partitionOfCell, graph, setup, state, summary, reporter,
+      workers, serialTetGen, remeshedInput);
     if (!status.ok() || summary.aborted)
     {
       return status;
     }
   }
-  if (remeshesInputFirst(options))
+  if (!remeshedInput && improvesInputFirst(options, summary.plan))
   {
-    status = remeshInputFirst(options, partitionOfCell, graph, setup, state, summary, reporter);
+    status = improveInputFirst(options, partitionOfCell, graph, setup, state, summary, reporter);
     if (!status.ok() || summary.aborted)
     {
       return status;

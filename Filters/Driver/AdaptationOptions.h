@@ -62,7 +62,7 @@ struct AdaptationOptions
   double volumeFactor{};
   double radiusEdgeRatio{};
   bool improveQuality{};
-  bool improveInput{}; // improve (Delaunay: a sliver-laden one meshed anew) before refining
+  bool improveInput{}; // improve (a sliver-laden one meshed anew) before refining
   int improvementPasses{};
   int numberOfThreads{};
   std::int64_t maximumNumberOfCells{};
@@ -212,10 +212,11 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "with ImproveQuality, also improve the input's tets before refining them, as the refined "
       "ones are. Template: children keep their parent's shape, so this does the work on an "
       "eighth of the tets per pass (not with RefinementRegions or RefinementBox, which leave the "
-      "other tets as they are). Delaunay: an input with more than 0.1% of its tets under 1 "
-      "degree is first meshed anew by TetGen as a whole from its boundary and interface faces, "
-      "which TetGen may split (with tagged boundary triangles: around its slivers, its boundary "
-      "and interface edges split as refinement splits them), then improved; --no-improve-input "
+      "other tets as they are). An input with more than 0.1% of its tets under 1 degree is "
+      "first meshed anew by TetGen as a whole from its boundary and interface faces, which "
+      "TetGen may split, then improved (Delaunay with tagged boundary triangles: around its "
+      "slivers, its boundary and interface edges split as refinement splits them; Template: "
+      "not with tagged triangles, RefinementRegions or RefinementBox); --no-improve-input "
       "refines the input as given",
       &O::improveInput },
     { "NumberOfImprovementPasses", "--improve-passes", "N", K::Integer, 0, 20, 2, "", S::Any,

@@ -40,6 +40,7 @@ Status remeshWholeInput(const ColorLoopSetup& setup, const AdaptationOptions& op
   ColorLoopSetup sweep = setup;
   sweep.refine = true;
   sweep.remeshSweep = true;
+  sweep.method = RefinementMethod::Delaunay; // also before template refinement
   sweep.improve = false;
   sweep.numberOfIterations = 1;
   sweep.delaunay.shapesOnly = true;
@@ -110,25 +111,29 @@ Status improveInputBetween(double progressStart, double progressEnd,
     options, partitionOfCell, graph, setup, state, summary, reporter, progressEnd);
 }
 
-bool remeshesInputFirst(const AdaptationOptions& options)
+bool remeshesInputFirst(const AdaptationOptions& options, const AdaptationPlan& plan)
 {
-  return options.improveInput && options.improveQuality &&
-    options.method == RefinementMethod::Delaunay;
+  if (!options.improveInput || !options.improveQuality)
+  {
+    return false;
+  }
+  if (options.method == RefinementMethod::Delaunay)
+  {
+    return true;
+  }
+  // Templates have no interface length for the rounds the clusters need, so only the whole
+  // input, over every tet (a selection promises to leave the others as they are).
+  return !options.keepBoundaryTriangulation && !plan.restricted();
 }
 
 Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>& partitionOfCell,
   PartitionGraph& graph, ColorLoopSetup& setup, AdaptationState& state, AdaptationSummary& summary,
-  PhaseReporter& reporter)
+  PhaseReporter& reporter, bool& remeshed)
 {
-  bool sliverLaden = false;
-  Status status = countSlivers(setup.threads, state, sliverLaden);
-  if (!status.ok() || !sliverLaden)
-  {
-    return status;
-  }
+  remeshed = false;
+  Status status = Status::success();
   if (!options.keepBoundaryTriangulation)
   {
-    bool remeshed = false;
     status = remeshWholeInput(setup, options, state, summary, reporter, remeshed);
     if (!status.ok() || summary.aborted)
     {
@@ -145,9 +150,10 @@ Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>
       return improveInputBetween(
         0.6, 1, options, partitionOfCell, graph, setup, state, summary, reporter);
     }
-    // TetGen failed on the whole input: its tets went back unchanged; around the slivers below.
+    // TetGen failed on the whole input: its tets went back unchanged. Templates refine them as
+    // they are (after improveInputFirst); Delaunay meshes the clusters around the slivers below.
     status = returnTetsToPartitions(state, partitionOfCell, summary.plan.partitions, setup.threads);
-    if (!status.ok())
+    if (!status.ok() || options.method == RefinementMethod::Template)
     {
       return status;
     }
@@ -171,7 +177,6 @@ Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>
   sweep.stage = Stage::ImproveInput;
   sweep.progressStart = 0.1;
   sweep.progressEnd = 0.6;
-  bool remeshed = false;
   status = remeshSliverClusters(
     sweep, options, summary.plan.boxesPerAxis, state, summary, reporter, remeshed);
   if (!status.ok() || summary.aborted || !remeshed)

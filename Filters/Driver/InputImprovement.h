@@ -2,8 +2,10 @@
 // or one close to it, so a poor input tet becomes eight poor tets per pass: improving the input
 // works on a fraction of the tets that improving the refined mesh does, and leaves that step
 // little to do. Delaunay: TetGen keeps every partition's boundary, and where those faces are a
-// sliver-laden input's, it refines slowly and leaves slivers; such an input is meshed anew around
-// its slivers first, then improved.
+// sliver-laden input's, it refines slowly and leaves slivers. Templates cut slivers into slivers,
+// and improvement cannot mend what they then make (a size field's passes on the benchmark's poor
+// input: 1.9 M tets, 43 s, minimum dihedral p1 0.03 degrees). So a sliver-laden input is meshed
+// anew by TetGen first, for either method, then improved.
 #ifndef cgmesh_InputImprovement_h
 #define cgmesh_InputImprovement_h
 
@@ -26,20 +28,24 @@ Status improveInputFirst(const AdaptationOptions& options, const std::vector<int
   PartitionGraph& graph, ColorLoopSetup& setup, AdaptationState& state, AdaptationSummary& summary,
   PhaseReporter& reporter);
 
-// Whether the run meshes a sliver-laden input anew first: Delaunay with ImproveInput and
-// ImproveQuality.
-bool remeshesInputFirst(const AdaptationOptions& options);
+// Whether the run meshes a sliver-laden input anew first: ImproveInput and ImproveQuality, and
+// for templates only where the boundary triangulation may change (no tagged triangles, no pieces
+// across processes) and over the whole mesh (no RefinementRegions or RefinementBox).
+bool remeshesInputFirst(const AdaptationOptions& options, const AdaptationPlan& plan);
 
-// When the input's tets under RemeshSliverDegrees are more than RemeshSliverShare of all:
-// the interface rounds of Delaunay refinement (boundary, material-interface and partition-
+// For an input whose tets under RemeshSliverDegrees are more than RemeshSliverShare of all
+// (countSlivers), with TetGen attached to `setup`. Where the boundary triangulation may change,
+// the whole input is meshed anew in one TetGen call with the radius-edge bound alone, its
+// boundary and material-interface faces free to split. Otherwise, and for Delaunay when that call
+// fails: the interface rounds of Delaunay refinement (boundary, material-interface and partition-
 // interface edges split down to the interface length), then the clusters around the slivers
-// meshed anew by TetGen with the radius-edge bound alone (remeshSliverClusters), every tet back
-// to its input cell's partition with `graph` and the colouring rebuilt, and the tets improved as
-// by improveInputFirst. Refinement then cuts its partitions through TetGen's tets instead of
-// slivers.
+// meshed anew (remeshSliverClusters). Then every tet goes back to its input cell's partition with
+// `graph` and the colouring rebuilt, and the tets are improved as by improveInputFirst.
+// `remeshed` says whether TetGen meshed any of it anew, and so whether the tets were improved.
+// Refinement then cuts its partitions through TetGen's tets instead of slivers.
 Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>& partitionOfCell,
   PartitionGraph& graph, ColorLoopSetup& setup, AdaptationState& state, AdaptationSummary& summary,
-  PhaseReporter& reporter);
+  PhaseReporter& reporter, bool& remeshed);
 
 // improveInputFirst, its progress going from `progressStart` to `progressEnd` of its stage.
 Status improveInputBetween(double progressStart, double progressEnd,

@@ -104,14 +104,17 @@ Status countSlivers(int threads, const AdaptationState& state, bool& many)
 {
   std::vector<std::int64_t> slivers(state.partitions.size(), 0);
   const std::vector<double>& xyz = state.coordinates;
+  const double ceiling = meanRatioCeiling(RemeshSliverDegrees);
   const Status status = runParallel(threads, static_cast<std::int64_t>(state.partitions.size()),
     [&](std::int64_t p)
     {
       for (const Tet& tet : state.partitions[p].tets)
       {
-        const double angle = minimumDihedralAngle(xyz.data() + 3 * tet[0], xyz.data() + 3 * tet[1],
-          xyz.data() + 3 * tet[2], xyz.data() + 3 * tet[3]);
-        slivers[p] += angle < RemeshSliverDegrees ? 1 : 0;
+        slivers[p] +=
+          minimumDihedralAngleBelow(xyz.data() + 3 * tet[0], xyz.data() + 3 * tet[1],
+            xyz.data() + 3 * tet[2], xyz.data() + 3 * tet[3], RemeshSliverDegrees, ceiling)
+          ? 1
+          : 0;
       }
     });
   std::int64_t total = 0;

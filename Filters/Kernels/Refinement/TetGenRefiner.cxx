@@ -68,6 +68,7 @@ bool holdsManySlivers(const PartitionMesh& partition, const RefinementContext& c
   const PartitionRefinement& refinement)
 {
   std::int64_t slivers = 0;
+  const double ceiling = meanRatioCeiling(RemeshSliverDegrees);
   for (const Tet& tet : partition.tets)
   {
     const double* p[4];
@@ -75,7 +76,7 @@ bool holdsManySlivers(const PartitionMesh& partition, const RefinementContext& c
     {
       p[k] = pointCoordinates(*context.coordinates, refinement.newCoordinates, tet[k]);
     }
-    if (minimumDihedralAngle(p[0], p[1], p[2], p[3]) < RemeshSliverDegrees)
+    if (minimumDihedralAngleBelow(p[0], p[1], p[2], p[3], RemeshSliverDegrees, ceiling))
     {
       ++slivers;
     }
