@@ -15,6 +15,7 @@
 #include "WorkerPool.h"
 
 #include <algorithm>
+#include <iomanip>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -313,17 +314,58 @@ Status adoptMergedMesh(
   return status;
 }
 
+// Why a template run refines a sliver-laden input as given; empty when it meshes it anew.
+std::string whyTemplatesKeepSlivers(const AdaptationOptions& options, const AdaptationPlan& plan)
+{
+  if (!options.improveQuality)
+  {
+    return "ImproveQuality is off";
+  }
+  if (!options.improveInput)
+  {
+    return "ImproveInput is off";
+  }
+  if (plan.restricted())
+  {
+    return "RefinementRegions or RefinementBox leaves the other tets as they are";
+  }
+  if (options.keepBoundaryTriangulation)
+  {
+    return "tagged triangles or pieces across processes keep the boundary's triangles";
+  }
+  return std::string();
+}
+
 // Meshes a sliver-laden input anew first (remeshInputFirst); any other input is left as it is.
-// Template runs start their TetGen worker only here, for such an input: one, as there is one call.
+// Template runs start their TetGen worker only here, for such an input: one, as there is one
+// call. A template run that may not mesh it anew warns: templates cut each sliver into slivers.
 Status remeshIfSliverLaden(const AdaptationOptions& options,
   const std::vector<int>& partitionOfCell, PartitionGraph& graph, ColorLoopSetup& setup,
   AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter,
   std::unique_ptr<WorkerPool>& workers, std::mutex& serialTetGen, bool& remeshed)
 {
-  bool sliverLaden = false;
-  const Status status = countSlivers(setup.threads, state, sliverLaden);
-  if (!status.ok() || !sliverLaden)
+  const bool remeshes = remeshesInputFirst(options, summary.plan);
+  if (!remeshes && options.method != RefinementMethod::Template)
   {
+    return Status::success(); // Delaunay meshes its sliver-laden partitions anew one by one
+  }
+  SliverCount count;
+  const Status status = countSlivers(setup.threads, state, count);
+  if (!status.ok() || !count.many)
+  {
+    return status;
+  }
+  if (!remeshes)
+  {
+    std::ostringstream text;
+    text << count.slivers << " of " << count.tets << " input tets (" << std::setprecision(3)
+         << 100.0 * static_cast<double>(count.slivers) / static_cast<double>(count.tets)
+         << "%) have a dihedral angle under " << RemeshSliverDegrees
+         << " degree; they are refined as given (" << whyTemplatesKeepSlivers(options, summary.plan)
+         << ") and templates cut each sliver into slivers. Such an input is meshed anew by TetGen "
+            "first with ImproveQuality and ImproveInput on, over the whole mesh, its boundary "
+            "free to change";
+    summary.warnings.push_back({ WarningKind::SliverLadenInputKept, -1, text.str() });
     return status;
   }
   if (!setup.runTetGen)
@@ -414,14 +456,11 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
     attachTetGen(options, setup, summary, workers.get(), serialTetGen);
   }
   bool remeshedInput = false;
-  if (remeshesInputFirst(options, summary.plan))
+  status = remeshIfSliverLaden(options, partitionOfCell, graph, setup, state, summary, reporter,
+    workers, serialTetGen, remeshedInput);
+  if (!status.ok() || summary.aborted)
   {
-    status = remeshIfSliverLaden(options, partitionOfCell, graph, setup, state, summary, reporter,
-      workers, serialTetGen, remeshedInput);
-    if (!status.ok() || summary.aborted)
-    {
-      return status;
-    }
+    return status;
   }
   if (!remeshedInput && improvesInputFirst(options, summary.plan))
   {

@@ -18,7 +18,8 @@ enum class WarningKind
   UnusedPointsRemoved,       // points no tet uses were left out of the output
   DelaunayFallback,          // TetGen failed on a partition, refined by templates instead
   SweepRemeshFailed,         // TetGen failed on a box of the Delaunay sweep, left as refined
-  InputRemeshFailed          // TetGen failed on a cluster of the input's slivers, left as it was
+  InputRemeshFailed,         // TetGen failed on a cluster of the input's slivers, left as it was
+  SliverLadenInputKept       // templates refined a sliver-laden input as given
 };
 
 // The kind's name in reports ("delaunay-fallback").
@@ -42,6 +43,8 @@ inline const char* warningKindName(WarningKind kind)
       return "sweep-remesh-failed";
     case WarningKind::InputRemeshFailed:
       return "input-remesh-failed";
+    case WarningKind::SliverLadenInputKept:
+      return "sliver-laden-input-kept";
   }
   return "unknown";
 }

@@ -100,7 +100,7 @@ Status remeshAcrossFormerInterfaces(const ColorLoopSetup& setup, const Adaptatio
     summary, reporter, found);
 }
 
-Status countSlivers(int threads, const AdaptationState& state, bool& many)
+Status countSlivers(int threads, const AdaptationState& state, SliverCount& count)
 {
   std::vector<std::int64_t> slivers(state.partitions.size(), 0);
   const std::vector<double>& xyz = state.coordinates;
@@ -117,14 +117,13 @@ Status countSlivers(int threads, const AdaptationState& state, bool& many)
           : 0;
       }
     });
-  std::int64_t total = 0;
-  std::size_t tets = 0;
+  count = SliverCount();
   for (std::size_t p = 0; p < slivers.size(); ++p)
   {
-    total += slivers[p];
-    tets += state.partitions[p].tets.size();
+    count.slivers += slivers[p];
+    count.tets += static_cast<std::int64_t>(state.partitions[p].tets.size());
   }
-  many = exceedsSliverShare(total, tets);
+  count.many = exceedsSliverShare(count.slivers, static_cast<std::size_t>(count.tets));
   return status;
 }
 

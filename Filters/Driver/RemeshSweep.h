@@ -12,6 +12,8 @@
 
 #include "ColorLoop.h"
 
+#include <cstdint>
+
 namespace cgmesh
 {
 
@@ -29,9 +31,16 @@ Status remeshAcrossFormerInterfaces(const ColorLoopSetup& setup, const Adaptatio
   int boxesPerAxis, const std::vector<char>& formerInterface, AdaptationState& state,
   AdaptationSummary& summary, PhaseReporter& reporter);
 
-// Sets `many` when the tets under RemeshSliverDegrees are more than RemeshSliverShare of all tets
-// (a scan of every tet, on `threads` threads).
-Status countSlivers(int threads, const AdaptationState& state, bool& many);
+// The tets under RemeshSliverDegrees among all, and whether they are more than RemeshSliverShare.
+struct SliverCount
+{
+  std::int64_t slivers = 0;
+  std::int64_t tets = 0;
+  bool many = false;
+};
+
+// Counts the slivers of every partition (a scan of every tet, on `threads` threads).
+Status countSlivers(int threads, const AdaptationState& state, SliverCount& count);
 
 // Meshes the clusters around every sliver anew as the sweep does (not only at former
 // interfaces), with the radius-edge bound alone (DelaunayParameters::shapesOnly), when the tets

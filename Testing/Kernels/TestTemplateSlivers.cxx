@@ -1,10 +1,11 @@
 // Template refinement of sliver-laden inputs: with ImproveInput such an input is meshed anew by
 // TetGen before templates cut it (conforming, conserving, the same for any thread count, far
 // better shapes, with and without a size field), never where the boundary triangulation or the
-// tets outside a selection must stay; and the mean-ratio screen that counts slivers agrees with
-// the angle itself.
+// tets outside a selection must stay (then a warning says so); and the mean-ratio screen that
+// counts slivers agrees with the angle itself.
 #include "AdaptationDriver.h"
 #include "Core/TetQuality.h"
+#include "CubeGenerator.h"
 #include "DelaunayTestSupport.h"
 #include "MeshChecks.h"
 #include "Refinement/TetGenRefiner.h"
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <string>
 #include <vector>
 
 using namespace cgmesh;
@@ -27,11 +29,28 @@ using cgmesh_test::sliverLadenBlock;
 namespace
 {
 
-bool warnsOfUnusedPoints(const AdaptationResult& result)
+bool warns(const AdaptationResult& result, WarningKind kind)
 {
   return std::any_of(result.summary.warnings.begin(), result.summary.warnings.end(),
-    [](const AdaptationWarning& warning)
-    { return warning.kind == WarningKind::UnusedPointsRemoved; });
+    [kind](const AdaptationWarning& warning) { return warning.kind == kind; });
+}
+
+bool warnsOfUnusedPoints(const AdaptationResult& result)
+{
+  return warns(result, WarningKind::UnusedPointsRemoved);
+}
+
+// A run that refines a sliver-laden input as given says so, and why.
+void checkWarnsOfSliversKept(const AdaptationResult& result, const std::string& reason)
+{
+  CHECK(warns(result, WarningKind::SliverLadenInputKept));
+  for (const AdaptationWarning& warning : result.summary.warnings)
+  {
+    if (warning.kind == WarningKind::SliverLadenInputKept)
+    {
+      CHECK(warning.text.find(reason) != std::string::npos);
+    }
+  }
 }
 
 AdaptationOptions templateOptions()
@@ -104,10 +123,12 @@ void test_sliver_laden_input_is_meshed_anew_before_templates()
   options.improveInput = false;
   const AdaptationResult asGiven = run(input, options);
   CHECK_EQUAL(asGiven.summary.inputRemeshedBoxes, std::int64_t(0));
+  checkWarnsOfSliversKept(asGiven, "ImproveInput is off");
   options.improveInput = true;
   const AdaptationResult serial = run(input, options);
   cgmesh_test::checkValidAndConserving(input, serial.mesh);
   CHECK_EQUAL(serial.summary.inputRemeshedBoxes, std::int64_t(1));
+  CHECK(!warns(serial, WarningKind::SliverLadenInputKept));
   CHECK_EQUAL(serial.summary.inputDroppedPoints, std::int64_t(0));
   CHECK_EQUAL(serial.summary.inputRemeshFailures, std::int64_t(0));
   CHECK(!warnsOfUnusedPoints(serial));
@@ -127,7 +148,16 @@ void test_sliver_laden_input_is_meshed_anew_before_templates()
 
   // Without ImproveQuality nothing is changed before refining.
   options.improveQuality = false;
-  CHECK_EQUAL(run(input, options).summary.inputRemeshedBoxes, std::int64_t(0));
+  const AdaptationResult unimproved = run(input, options);
+  CHECK_EQUAL(unimproved.summary.inputRemeshedBoxes, std::int64_t(0));
+  checkWarnsOfSliversKept(unimproved, "ImproveQuality is off");
+
+  // An input with few slivers is neither meshed anew nor warned about.
+  TetMesh cube;
+  CHECK(generateKuhnCube(6, cube).ok());
+  const AdaptationResult good = run(cube, templateOptions());
+  CHECK_EQUAL(good.summary.inputRemeshedBoxes, std::int64_t(0));
+  CHECK(good.summary.warnings.empty());
 }
 
 // The same with a size field (finer in the inner cube): the sizes follow TetGen's points, and the
@@ -170,7 +200,7 @@ void test_sliver_laden_input_with_a_size_field()
 
 // Not where the tets must stay as given: outside a RefinementRegions selection, or with the
 // boundary triangulation kept (tagged triangles, pieces across processes). Those runs match the
-// runs that never improve the input first.
+// runs that never improve the input first, and warn that the slivers were refined as given.
 void test_sliver_laden_input_kept_where_it_must_stay()
 {
   const TetMesh input = sliverLadenBlock(1500);
@@ -178,6 +208,7 @@ void test_sliver_laden_input_kept_where_it_must_stay()
   options.refinementRegions = "2";
   const AdaptationResult selected = run(input, options);
   CHECK_EQUAL(selected.summary.inputRemeshedBoxes, std::int64_t(0));
+  checkWarnsOfSliversKept(selected, "RefinementRegions or RefinementBox");
   options.improveInput = false;
   CHECK(cgmesh_test::identicalResults(selected, run(input, options)));
 
@@ -185,6 +216,7 @@ void test_sliver_laden_input_kept_where_it_must_stay()
   options.keepBoundaryTriangulation = true;
   const AdaptationResult kept = run(input, options);
   CHECK_EQUAL(kept.summary.inputRemeshedBoxes, std::int64_t(0));
+  checkWarnsOfSliversKept(kept, "tagged triangles or pieces across processes");
   cgmesh_test::checkValidAndConserving(input, kept.mesh);
 }
 
