@@ -351,7 +351,7 @@ Status remeshIfSliverLaden(const AdaptationOptions& options,
   }
   SliverCount count;
   const Status status = countSlivers(setup.threads, state, count);
-  if (!status.ok() || !count.many)
+  if (!status.ok() || !count.many())
   {
     return status;
   }

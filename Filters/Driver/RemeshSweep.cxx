@@ -123,7 +123,6 @@ Status countSlivers(int threads, const AdaptationState& state, SliverCount& coun
     count.slivers += slivers[p];
     count.tets += static_cast<std::int64_t>(state.partitions[p].tets.size());
   }
-  count.many = exceedsSliverShare(count.slivers, static_cast<std::size_t>(count.tets));
   return status;
 }
 

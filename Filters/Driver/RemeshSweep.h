@@ -31,12 +31,14 @@ Status remeshAcrossFormerInterfaces(const ColorLoopSetup& setup, const Adaptatio
   int boxesPerAxis, const std::vector<char>& formerInterface, AdaptationState& state,
   AdaptationSummary& summary, PhaseReporter& reporter);
 
-// The tets under RemeshSliverDegrees among all, and whether they are more than RemeshSliverShare.
+// The tets under RemeshSliverDegrees among all.
 struct SliverCount
 {
   std::int64_t slivers = 0;
   std::int64_t tets = 0;
-  bool many = false;
+
+  // Whether they are more than RemeshSliverShare of all.
+  bool many() const { return exceedsSliverShare(slivers, static_cast<std::size_t>(tets)); }
 };
 
 // Counts the slivers of every partition (a scan of every tet, on `threads` threads).
