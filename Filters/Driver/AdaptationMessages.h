@@ -19,7 +19,7 @@ enum class WarningKind
   DelaunayFallback,          // TetGen failed on a partition, refined by templates instead
   SweepRemeshFailed,         // TetGen failed on a box of the Delaunay sweep, left as refined
   InputRemeshFailed,         // TetGen failed on a cluster of the input's slivers, left as it was
-  SliverLadenInputKept       // templates refined a sliver-laden input as given
+  SliverLadenInputKept       // a sliver-laden input was refined as given
 };
 
 // The kind's name in reports ("delaunay-fallback").

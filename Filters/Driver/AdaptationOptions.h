@@ -217,7 +217,8 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "TetGen may split, then improved (Delaunay with tagged boundary triangles: around its "
       "slivers, its boundary and interface edges split as refinement splits them; Template: "
       "not with tagged triangles, RefinementRegions or RefinementBox); --no-improve-input "
-      "refines the input as given",
+      "refines the input as given, and a sliver-laden one with a warning (Delaunay: slow, as "
+      "TetGen refines its partitions against the slivers' faces)",
       &O::improveInput },
     { "NumberOfImprovementPasses", "--improve-passes", "N", K::Integer, 0, 20, 2, "", S::Any,
       "passes of edge removal, face swaps and smoothing per partition in each sweep",

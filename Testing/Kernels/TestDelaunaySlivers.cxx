@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <string>
 #include <vector>
 
 using namespace cgmesh;
@@ -286,14 +287,23 @@ void test_sliver_laden_mesh_conforms_across_threads()
   CHECK(sliversAfterSweep < 0.25 * sliversWithout);
 }
 
-// With ImproveInput, a sliver-laden input is meshed anew before it is refined. Where its boundary
-// may be re-triangulated, as a whole: one TetGen call from its boundary and material interface
-// faces, which TetGen may split, and all its points, so nothing is dropped. Where the boundary
-// triangulation is kept (tagged triangles, pieces across processes): its interface rounds
-// first, then TetGen on the clusters of its slivers, which drop the points the rounds put inside
-// them. Either way, refinement's partitions then hold TetGen's tets, not the input's slivers:
-// fewer of them are meshed anew, and the output is conforming, conserving and the same for any
-// thread count, with no point left over but those the clusters dropped.
+std::size_t keptSliversWarnings(const AdaptationResult& result)
+{
+  return static_cast<std::size_t>(
+    std::count_if(result.summary.warnings.begin(), result.summary.warnings.end(),
+      [](const AdaptationWarning& warning)
+      { return warning.kind == WarningKind::SliverLadenInputKept; }));
+}
+
+// With ImproveInput, a sliver-laden input is meshed anew before it is refined; without, it is
+// refined as given and the run warns. Where its boundary may be re-triangulated, as a whole: one
+// TetGen call from its boundary and material interface faces, which TetGen may split, and all its
+// points, so nothing is dropped. Where the boundary triangulation is kept (tagged triangles,
+// pieces across processes): its interface rounds first, then TetGen on the clusters of its
+// slivers, which drop the points the rounds put inside them. Either way, refinement's partitions
+// then hold TetGen's tets, not the input's slivers: fewer of them are meshed anew, and the output
+// is conforming, conserving and the same for any thread count, with no point left over but those
+// the clusters dropped.
 void test_sliver_laden_input_is_meshed_anew_first()
 {
   const TetMesh input = sliverLadenBlock(1500);
@@ -304,6 +314,16 @@ void test_sliver_laden_input_is_meshed_anew_first()
   options.improveInput = false;
   const AdaptationResult refinedAsGiven = run(input, options);
   CHECK_EQUAL(refinedAsGiven.summary.inputRemeshedBoxes, std::int64_t(0));
+  // Refined as given, the run says so, why, and what it costs.
+  CHECK_EQUAL(keptSliversWarnings(refinedAsGiven), std::size_t(1));
+  for (const AdaptationWarning& warning : refinedAsGiven.summary.warnings)
+  {
+    if (warning.kind == WarningKind::SliverLadenInputKept)
+    {
+      CHECK(warning.text.find("(ImproveInput is off)") != std::string::npos);
+      CHECK(warning.text.find("against the slivers' faces") != std::string::npos);
+    }
+  }
   const double underAsGiven =
     shareBelow(refinedAsGiven.mesh.tets, refinedAsGiven.mesh.coordinates, 1.0);
   for (bool keepBoundary : { false, true })
@@ -324,6 +344,7 @@ void test_sliver_laden_input_is_meshed_anew_first()
     }
     CHECK_EQUAL(serial.summary.inputRemeshFailures, std::int64_t(0));
     CHECK_EQUAL(serial.summary.delaunayFallbacks, std::int64_t(0));
+    CHECK_EQUAL(keptSliversWarnings(serial), std::size_t(0));
     CHECK(std::none_of(serial.summary.warnings.begin(), serial.summary.warnings.end(),
       [](const AdaptationWarning& warning)
       { return warning.kind == WarningKind::UnusedPointsRemoved; }));
