@@ -1,5 +1,6 @@
 #include "AdaptationDriver.h"
 
+#include "AbortWatch.h"
 #include "ColorLoop.h"
 #include "Coloring/ColoringSupport.h"
 #include "Coloring/PartitionColoring.h"
@@ -230,6 +231,16 @@ ColorLoopSetup refinementSetup(const AdaptationOptions& options, const Adaptatio
   return setup;
 }
 
+// The pool's TetGen calls end early when the run is aborted (options.abortRequested is the
+// run's AbortWatch, safe on any thread).
+void cutShortOnAbort(WorkerPool& pool, const AdaptationOptions& options)
+{
+  if (options.abortRequested)
+  {
+    pool.setAbortCheck([abortRequested = options.abortRequested] { return !abortRequested(); });
+  }
+}
+
 // Worker processes, forked before any parallel loop of the run: one per thread for the Delaunay
 // method's TetGen calls (or one, serialised, on request), and for the curve-chunk partitioner's
 // METIS calls when there are chunks and threads to run them at once. None otherwise.
@@ -238,7 +249,9 @@ std::unique_ptr<WorkerPool> startWorkers(
 {
   if (options.method == RefinementMethod::Delaunay)
   {
-    return std::make_unique<WorkerPool>(options.serializeTetGen ? 1 : plan.threads);
+    auto pool = std::make_unique<WorkerPool>(options.serializeTetGen ? 1 : plan.threads);
+    cutShortOnAbort(*pool, options);
+    return pool;
   }
   if (plan.partitioner == PartitionerKind::CurveChunks && !options.partitionByRegion &&
     plan.threads > 1 && curveChunkCount(input.numberOfTets(), plan.partitions) > 1)
@@ -387,6 +400,7 @@ Status remeshIfSliverLaden(const AdaptationOptions& options,
     {
       workers = std::make_unique<WorkerPool>(1);
     }
+    cutShortOnAbort(*workers, options);
     attachTetGen(options, setup, summary, workers.get(), serialTetGen, !started);
   }
   return remeshInputFirst(
@@ -599,9 +613,21 @@ Status adaptMesh(
         summary.plan.edgeLengthThreshold, input.sizes);
     }
     reporter.progress(Stage::Prepare, 1.0);
+    // The front end's abort hook, asked on this thread only, behind a watch that any thread may
+    // poll while TetGen runs (AbortWatch.h).
+    AbortWatch watch(options.abortRequested, reporter);
+    AdaptationOptions watched = options;
+    if (options.abortRequested)
+    {
+      watched.abortRequested = [&watch]
+      {
+        return !watch.keepGoing();
+      };
+    }
     try
     {
-      status = runPipeline(input, options, result, reporter);
+      status = runPipeline(input, watched, result, reporter);
+      summary.aborted = summary.aborted || watch.aborted();
     }
     catch (const std::bad_alloc&)
     {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 namespace cgmesh
 {
@@ -107,9 +108,9 @@ void recordRemeshReports(
     summary.tetgenPoints += outcome.tetgenPoints;
     boxes += outcome.remeshed ? 1 : 0;
     dropped += outcome.droppedPoints;
-    if (!outcome.fellBack)
+    if (!outcome.fellBack || outcome.reason == WorkerCallAbortedReason)
     {
-      continue;
+      continue; // an aborted run's result is dropped: its calls cut short are no failures
     }
     ++failures;
     if (beforeRefinement)
@@ -140,7 +141,7 @@ void recordReports(const std::vector<int>& members, const std::vector<TaskReport
     summary.tetgenRetries += report.delaunay.retried ? 1 : 0;
     summary.tetgenWithoutQualityBound += report.delaunay.withoutQualityBound ? 1 : 0;
     summary.tetgenRemeshed += report.delaunay.remeshed ? 1 : 0;
-    if (report.delaunay.fellBack)
+    if (report.delaunay.fellBack && report.delaunay.reason != WorkerCallAbortedReason)
     {
       ++summary.delaunayFallbacks;
       summary.fallbackPartitions.push_back(members[i]);
@@ -237,6 +238,14 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
   const std::int64_t count = static_cast<std::int64_t>(members.size());
   reporter.enter(Phase::Adapt);
   std::vector<TaskReport> reports(members.size());
+  // TetGen calls can take minutes: the calling thread, its own done, keeps polling the abort
+  // hook (which also reports progress again) until the others end, and an abort cuts their
+  // calls short (WorkerPool::setAbortCheck).
+  std::optional<WaitingHook> waiting;
+  if (setup.runTetGen && iteration.options.abortRequested)
+  {
+    waiting.emplace([&iteration] { iteration.options.abortRequested(); });
+  }
   Status status = runParallel(setup.threads, count,
     [&](std::int64_t i)
     {
@@ -635,6 +644,11 @@ Status runColorLoop(const ColorLoopSetup& setup, const AdaptationOptions& option
       if (!status.ok())
       {
         return status;
+      }
+      if (setup.runTetGen && options.abortRequested && options.abortRequested())
+      {
+        summary.aborted = true; // seen while the colour's TetGen calls ran, which it cut short
+        return Status::success();
       }
       const double done = static_cast<double>(iteration * setup.numberOfColors + color + 1) / steps;
       reporter.progress(

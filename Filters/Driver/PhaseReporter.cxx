@@ -63,9 +63,18 @@ void PhaseReporter::progress(Stage stage, double fraction)
     return; // a stage skipped ahead earlier: never go back
   }
   this->Reported = overall;
+  this->ReportedStage = StageName[static_cast<int>(stage)];
   if (this->Callback)
   {
-    this->Callback(overall, StageName[static_cast<int>(stage)]);
+    this->Callback(overall, this->ReportedStage);
+  }
+}
+
+void PhaseReporter::heartbeat()
+{
+  if (this->Callback)
+  {
+    this->Callback(this->Reported, this->ReportedStage);
   }
 }
 

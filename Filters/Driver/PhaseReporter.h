@@ -67,6 +67,9 @@ public:
 
   // Reports `fraction` (0..1) of `stage` done.
   void progress(Stage stage, double fraction);
+  // Reports the last progress again: while a long step runs, the front end gets a chance to show
+  // it is alive and to take an abort.
+  void heartbeat();
 
   const PhaseSeconds& seconds() const { return this->Seconds; }
 
@@ -76,6 +79,7 @@ private:
   Stopwatch Clock;
   Phase Running = Phase::Count; // none
   double Reported = 0;
+  const char* ReportedStage = "preparing";
 };
 
 } // namespace cgmesh

@@ -1,5 +1,6 @@
 #include "WorkerPool.h"
 
+#include "ParallelFor.h"
 #include "Partitioning/MeshPartitioner.h"
 #include "Refinement/TetGenRefiner.h"
 #include "SocketTransfer.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <climits>
 #include <cmath>
 #include <csignal>
@@ -21,6 +23,7 @@
 #include <functional>
 #include <malloc.h>
 #include <new>
+#include <poll.h>
 #include <sys/socket.h>
 #include <sys/time.h>
 #include <sys/wait.h>
@@ -36,12 +39,13 @@ namespace
 enum RequestKind : std::int32_t
 {
   RunTetGen = 1,
-  DieAfterReading = 2, // the test hook: die as an abort inside TetGen would
-  PartitionGraph = 3
+  DieAfterReading = 2, // the test hooks: die as an abort inside TetGen would,
+  PartitionGraph = 3,
+  StallAfterReading = 4 // or hang as a looping call would
 };
 
 // Reads TetGen's switches and mesh, runs TetGen and answers. False when the exchange broke.
-bool serveTetGen(int socket, bool dieAfterReading)
+bool serveTetGen(int socket, RequestKind kind)
 {
   std::vector<char> switches;
   tetgenio in, out;
@@ -50,9 +54,13 @@ bool serveTetGen(int socket, bool dieAfterReading)
   {
     return false;
   }
-  if (dieAfterReading)
+  if (kind == DieAfterReading)
   {
     std::abort(); // what a failed assertion inside TetGen does
+  }
+  while (kind == StallAfterReading)
+  {
+    ::pause(); // until the host kills this worker
   }
   std::string failure;
   try
@@ -124,8 +132,9 @@ constexpr int MaximumHeldAllocation = 256 << 20;
     {
       _exit(0);
     }
-    const bool served = kind == PartitionGraph ? servePartitionGraph(socket)
-                                               : serveTetGen(socket, kind == DieAfterReading);
+    const bool served = kind == PartitionGraph
+      ? servePartitionGraph(socket)
+      : serveTetGen(socket, static_cast<RequestKind>(kind));
     if (!served)
     {
       _exit(1);
@@ -145,25 +154,25 @@ std::size_t workerCount(int requested)
   return std::min(static_cast<std::size_t>(std::max(requested, 1)), cores);
 }
 
-// The partition ids listed in the test hook's variable ("3,17"), sorted; what is not a
-// non-negative number is ignored.
-std::vector<int> partitionsToKill()
+// The numbers listed in a test hook's variable ("3,17"), sorted; what is not a non-negative
+// number is ignored.
+std::vector<int> numbersListedIn(const char* variable)
 {
-  std::vector<int> partitions;
-  const char* text = std::getenv(WorkerPool::KillPartitionsVariable);
+  std::vector<int> numbers;
+  const char* text = std::getenv(variable);
   while (text && *text)
   {
     char* end = nullptr;
     const long value = std::strtol(text, &end, 10);
     if (end != text && value >= 0 && value <= INT_MAX)
     {
-      partitions.push_back(static_cast<int>(value));
+      numbers.push_back(static_cast<int>(value));
     }
     text = end != text ? end : text + 1;
     text += *text == ',' ? 1 : 0;
   }
-  std::sort(partitions.begin(), partitions.end());
-  return partitions;
+  std::sort(numbers.begin(), numbers.end());
+  return numbers;
 }
 
 // How a worker that broke off an exchange ended, from its wait status (-1: not known), for a
@@ -218,8 +227,10 @@ double tetgenTimeLimitSeconds(const tetgenio& in, const std::string& switches)
 WorkerPool::WorkerPool(int workers)
   : Workers(workerCount(workers))
   , Spawner(serveRequests, static_cast<int>(this->Workers.size())) // declared after Workers
-  , KillPartitions(partitionsToKill())
+  , KillPartitions(numbersListedIn(KillPartitionsVariable))
 {
+  const std::vector<int> stalling = numbersListedIn(StallWorkerVariable);
+  this->StallWorker = stalling.empty() ? -1 : stalling.front();
   for (Worker& worker : this->Workers)
   {
     this->start(worker);
@@ -252,9 +263,14 @@ int WorkerPool::stop(Worker& worker, bool kill)
 }
 
 std::string WorkerPool::exchange(int index, time_t seconds, const std::string& program,
-  const std::string& piece, const std::function<bool(int)>& request,
+  const std::string& piece, bool abortable, const std::function<bool(int)>& request,
   const std::function<bool(int)>& readResult)
 {
+  const bool watched = abortable && this->KeepGoing;
+  if (watched && !this->KeepGoing())
+  {
+    return WorkerCallAbortedReason;
+  }
   Worker& worker =
     this->Workers[static_cast<std::size_t>(std::max(index, 0)) % this->Workers.size()];
   std::lock_guard<std::mutex> turn(worker.busy);
@@ -271,7 +287,32 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
   // A receive that fails at end of input leaves errno as it was: clear it, so that a stale
   // EAGAIN from an earlier call on this thread does not pass a dead worker off as a timeout.
   errno = 0;
-  const bool exchanged = request(worker.socket) && receiveAll(worker.socket, &ok, sizeof(ok));
+  bool exchanged = request(worker.socket);
+  if (exchanged && watched)
+  {
+    // The reply's first bytes are waited for in slices, the run asked between them.
+    const auto start = std::chrono::steady_clock::now();
+    for (;;)
+    {
+      pollfd reply{ worker.socket, POLLIN, 0 };
+      if (::poll(&reply, 1, WaitingHookPeriodMilliseconds) != 0)
+      {
+        break; // readable, closed, or an error: the receive below tells which
+      }
+      if (!this->KeepGoing())
+      {
+        this->stop(worker, true);
+        return WorkerCallAbortedReason;
+      }
+      if (std::chrono::steady_clock::now() - start > std::chrono::seconds(seconds))
+      {
+        errno = EAGAIN; // as the receive's own limit reports it
+        exchanged = false;
+        break;
+      }
+    }
+  }
+  exchanged = exchanged && receiveAll(worker.socket, &ok, sizeof(ok));
   if (exchanged && ok)
   {
     if (readResult(worker.socket))
@@ -302,12 +343,14 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
 std::string WorkerPool::runTetGen(
   int index, const tetgenio& in, const std::string& switches, tetgenio& out, int partition)
 {
-  const std::int32_t kind =
-    std::binary_search(this->KillPartitions.begin(), this->KillPartitions.end(), partition)
-    ? DieAfterReading
-    : RunTetGen;
+  const bool kill =
+    std::binary_search(this->KillPartitions.begin(), this->KillPartitions.end(), partition);
+  const bool stall = this->StallWorker >= 0 &&
+    static_cast<std::size_t>(std::max(index, 0)) % this->Workers.size() ==
+      static_cast<std::size_t>(this->StallWorker);
+  const std::int32_t kind = kill ? DieAfterReading : stall ? StallAfterReading : RunTetGen;
   return this->exchange(
-    index, static_cast<time_t>(tetgenTimeLimitSeconds(in, switches)), "TetGen", "partition",
+    index, static_cast<time_t>(tetgenTimeLimitSeconds(in, switches)), "TetGen", "partition", true,
     [&](int socket)
     {
       return sendAll(socket, &kind, sizeof(kind)) &&
@@ -326,6 +369,7 @@ std::string WorkerPool::partitionGraph(
   // METIS takes about half a second per million vertices; a call far beyond that is hung.
   return this->exchange(
     index, static_cast<time_t>(60.0 + 1e-4 * static_cast<double>(vertices)), "METIS", "chunk",
+    false,
     [&](int socket)
     {
       return sendAll(socket, &kind, sizeof(kind)) && sendAll(socket, settings, sizeof(settings)) &&

@@ -21,6 +21,7 @@
 #include <mutex>
 #include <string>
 #include <sys/types.h>
+#include <utility>
 #include <vector>
 
 class tetgenio;
@@ -57,11 +58,19 @@ public:
   std::string partitionGraph(
     int worker, const DualGraph& graph, int parts, bool contiguous, std::vector<int>& partOfVertex);
 
-  // Test hook: the environment variable CGMESH_TEST_KILL_TETGEN_PARTITIONS, a comma-separated
-  // list of partition ids, read once when the pool starts. A worker that receives a call for one
-  // of them aborts once it has read the request, as a failed assertion inside TetGen ends it; the
-  // host sees a dead worker, the call fails and the worker is replaced.
+  // While a TetGen call runs, `keepGoing` is asked every WaitingHookPeriodMilliseconds (and once
+  // before the call) whether the run goes on; when it says no, the worker is killed and replaced,
+  // and the call fails with WorkerCallAbortedReason. Any thread calls it. METIS calls are short
+  // and run to the end.
+  void setAbortCheck(std::function<bool()> keepGoing) { this->KeepGoing = std::move(keepGoing); }
+  // Test hooks, read once when the pool starts. CGMESH_TEST_KILL_TETGEN_PARTITIONS, a
+  // comma-separated list of partition ids: a worker that receives a call for one of them aborts
+  // once it has read the request, as a failed assertion inside TetGen ends it; the host sees a
+  // dead worker, the call fails and the worker is replaced. CGMESH_TEST_STALL_TETGEN_WORKER, a
+  // worker index: that worker (the one thread i calls) hangs on every TetGen call instead, as a
+  // looping call would, until the call's time limit or an abort ends it.
   static constexpr const char* KillPartitionsVariable = "CGMESH_TEST_KILL_TETGEN_PARTITIONS";
+  static constexpr const char* StallWorkerVariable = "CGMESH_TEST_STALL_TETGEN_WORKER";
 
 private:
   struct Worker
@@ -75,14 +84,17 @@ private:
   // what follows a success flag; a failure flag is followed by a message, returned. A worker that
   // breaks the exchange, dies, or sends nothing for `seconds` is replaced; the message names the
   // `program` it ran and the `piece` of work it had.
+  // `abortable`: the wait for the reply asks KeepGoing (see setAbortCheck).
   std::string exchange(int index, time_t seconds, const std::string& program,
-    const std::string& piece, const std::function<bool(int)>& request,
+    const std::string& piece, bool abortable, const std::function<bool(int)>& request,
     const std::function<bool(int)>& readResult);
   int stop(Worker& worker, bool kill); // the wait status when it killed, else -1
 
   std::vector<Worker> Workers;
   WorkerSpawner Spawner; // destroyed before Workers: it kills and reaps what is left of them
   std::vector<int> KillPartitions; // sorted; see KillPartitionsVariable
+  int StallWorker = -1;            // see StallWorkerVariable
+  std::function<bool()> KeepGoing;
 };
 
 } // namespace cgmesh

@@ -16,6 +16,7 @@
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -364,6 +365,46 @@ void test_abort()
   CGMESH_CHECK(run.outputCells() == 0, "output of an aborted run not empty");
 }
 
+// Sets AbortExecute from the first progress report a second after the start: by then the run
+// below waits on a TetGen worker that hangs (the pool's test hook), and only the progress the
+// filter reports again while it waits gives ParaView, or this observer, a chance to abort.
+class AbortOnProgressAfterASecond : public vtkCommand
+{
+public:
+  static AbortOnProgressAfterASecond* New() { return new AbortOnProgressAfterASecond; }
+  void Execute(vtkObject* caller, unsigned long, void*) override
+  {
+    if (std::chrono::steady_clock::now() - this->Start > std::chrono::seconds(1))
+      vtkAlgorithm::SafeDownCast(caller)->SetAbortExecute(1);
+  }
+  const std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
+};
+
+void test_abortDuringTetGenCall()
+{
+  CGMESH_CHECK(setenv("CGMESH_TEST_STALL_TETGEN_WORKER", "0", 1) == 0, "setenv");
+  vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(6);
+  FilterRun run(input);
+  run.Filter->SetMethod(vtkCoarseGrainedMeshAdaptation::DELAUNAY);
+  run.Filter->SetNumberOfPartitions(8);
+  run.Filter->SetNumberOfThreads(1);
+  vtkNew<AbortOnProgressAfterASecond> abort;
+  run.Filter->AddObserver(vtkCommand::ProgressEvent, abort);
+  run.update();
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - abort->Start).count();
+  unsetenv("CGMESH_TEST_STALL_TETGEN_WORKER");
+  // Without the progress reported again, the call would run to its time limit (at least 10 s)
+  // and the partitions fall back to templates.
+  CGMESH_CHECK(seconds < 8.0, "the abort took " << seconds << " s");
+  CGMESH_CHECK(run.Messages->Errors == 0, "an abort is not an error");
+  CGMESH_CHECK(run.Messages->AllMessages.find("aborted") != std::string::npos,
+    "no message for an aborted run: " << run.Messages->AllMessages);
+  CGMESH_CHECK(run.Messages->AllMessages.find("refined by templates") == std::string::npos,
+    "an aborted call reported as a fallback: " << run.Messages->AllMessages);
+  CGMESH_CHECK(run.outputCells() == 0, "output of an aborted run not empty");
+}
+
 void test_defaultsAndClamping()
 {
   vtkNew<vtkCoarseGrainedMeshAdaptation> filter;
@@ -438,6 +479,7 @@ int main()
   test_refinementBoxWidget();
   test_emptyInput();
   test_abort();
+  test_abortDuringTetGenCall();
   test_defaultsAndClamping();
   test_coloringSetters();
   if (cgmesh_test::FailureCount > 0)

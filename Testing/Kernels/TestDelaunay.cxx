@@ -19,11 +19,14 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <map>
 #include <set>
 #include <stdlib.h>
+#include <thread>
 
 using namespace cgmesh;
 using cgmesh_test::delaunayOptions;
@@ -265,6 +268,42 @@ void test_worker_deaths_fall_back_like_failures()
     }
   }
   CHECK(unsetenv(WorkerPool::KillPartitionsVariable) == 0);
+}
+
+// An abort while TetGen calls run (here: a worker that hangs on every call, the pool's test hook)
+// ends the run at once, not when the calls' time limit (at least 10 s) would: the hung worker is
+// killed, its partitions counted as no failure, and the front end's hook is only ever called on
+// the thread that started the run. At one thread that thread's own call hangs; at two, the other
+// thread's, while the calling thread has done its share and waits.
+void test_abort_cuts_tetgen_calls_short()
+{
+  const TetMesh input = threeRegionCube(8);
+  for (int threads : { 1, 2 })
+  {
+    CHECK(setenv(WorkerPool::StallWorkerVariable, threads == 1 ? "0" : "1", 1) == 0);
+    AdaptationOptions options = delaunayOptions(threads, 1);
+    const std::thread::id caller = std::this_thread::get_id();
+    const auto start = std::chrono::steady_clock::now();
+    bool onCaller = true;
+    options.abortRequested = [&]
+    {
+      onCaller = onCaller && std::this_thread::get_id() == caller;
+      return std::chrono::steady_clock::now() - start > std::chrono::milliseconds(500);
+    };
+    AdaptationResult result;
+    CHECK(adaptMesh(input, options, result).ok());
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    CHECK(result.summary.aborted);
+    CHECK(result.mesh.tets.empty());
+    CHECK(onCaller);
+    CHECK(seconds < 8.0);
+    CHECK_EQUAL(result.summary.delaunayFallbacks, std::int64_t(0));
+    CHECK(result.summary.warnings.empty());
+    std::cout << "aborted with hung TetGen workers at " << threads << " thread(s) after " << seconds
+              << " s\n";
+  }
+  CHECK(unsetenv(WorkerPool::StallWorkerVariable) == 0);
 }
 
 void test_bad_delaunay_options_are_refused()
@@ -610,6 +649,7 @@ int main()
   test_volume_bound_inside_partitions();
   test_failed_partitions_fall_back_to_templates();
   test_worker_deaths_fall_back_like_failures();
+  test_abort_cuts_tetgen_calls_short();
   test_bad_delaunay_options_are_refused();
   test_tampered_tetgen_output_is_refused();
   test_parents_hold_the_centroids_wherever_walks_start();

@@ -170,6 +170,10 @@ std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMes
       outcome.droppedPoints = session.droppedPoints();
       return failure;
     }
+    if (failure == WorkerCallAbortedReason)
+    {
+      break;
+    }
     outcome.retried = true;
     if (!remesh && failure.rfind(TetGenTimeLimitReason, 0) == 0)
     {

@@ -83,6 +83,9 @@ constexpr const char* TetGenTimeLimitReason = "TetGen took longer than";
 // fails with a reason starting with TetGenRunawayReason, and no further attempt is made either.
 constexpr int SteinerCapFloor = 1000;
 constexpr const char* TetGenRunawayReason = "TetGen kept inserting points";
+// A call ended because the run was aborted: no further attempt is made, and the partition's
+// outcome counts as no failure (the run's result is dropped).
+constexpr const char* WorkerCallAbortedReason = "the run was aborted";
 using TetGenRunner =
   std::function<std::string(const tetgenio& in, const std::string& switches, tetgenio& out)>;
 
