@@ -262,21 +262,17 @@ std::unique_ptr<WorkerPool> startWorkers(
 }
 
 // TetGen calls go to the worker of the calling thread (or to the first, serialised, on request
-// or when the pool has one worker).
+// or when the pool has one worker): a worker serves one call at a time, the others waiting for
+// their turn (WorkerPool).
 void attachTetGen(const AdaptationOptions& options, ColorLoopSetup& setup,
-  AdaptationSummary& summary, WorkerPool* pool, std::mutex& serialTetGen, bool oneWorker = false)
+  AdaptationSummary& summary, WorkerPool* pool, bool oneWorker = false)
 {
   const bool serialize = options.serializeTetGen || oneWorker;
   summary.concurrentTetGen = !serialize && summary.plan.threads > 1;
-  setup.runTetGen = [pool, serialize, &serialTetGen](
+  setup.runTetGen = [pool, serialize](
                       int partition, const tetgenio& in, const std::string& switches, tetgenio& out)
   {
-    if (serialize)
-    {
-      std::lock_guard<std::mutex> lock(serialTetGen);
-      return pool->runTetGen(0, in, switches, out, partition);
-    }
-    return pool->runTetGen(currentThreadIndex(), in, switches, out, partition);
+    return pool->runTetGen(serialize ? 0 : currentThreadIndex(), in, switches, out, partition);
   };
 }
 
@@ -371,7 +367,7 @@ const char* costOfKeptSlivers(RefinementMethod method)
 Status remeshIfSliverLaden(const AdaptationOptions& options,
   const std::vector<int>& partitionOfCell, PartitionGraph& graph, ColorLoopSetup& setup,
   AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter,
-  std::unique_ptr<WorkerPool>& workers, std::mutex& serialTetGen, bool& remeshed)
+  std::unique_ptr<WorkerPool>& workers, bool& remeshed)
 {
   const bool remeshes = remeshesInputFirst(options, summary.plan);
   SliverCount count;
@@ -401,7 +397,7 @@ Status remeshIfSliverLaden(const AdaptationOptions& options,
       workers = std::make_unique<WorkerPool>(1);
     }
     cutShortOnAbort(*workers, options);
-    attachTetGen(options, setup, summary, workers.get(), serialTetGen, !started);
+    attachTetGen(options, setup, summary, workers.get(), !started);
   }
   return remeshInputFirst(
     options, partitionOfCell, graph, setup, state, summary, reporter, remeshed);
@@ -476,14 +472,13 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
     return status;
   }
   ColorLoopSetup setup = refinementSetup(options, summary);
-  std::mutex serialTetGen;
   if (options.method == RefinementMethod::Delaunay)
   {
-    attachTetGen(options, setup, summary, workers.get(), serialTetGen);
+    attachTetGen(options, setup, summary, workers.get());
   }
   bool remeshedInput = false;
-  status = remeshIfSliverLaden(options, partitionOfCell, graph, setup, state, summary, reporter,
-    workers, serialTetGen, remeshedInput);
+  status = remeshIfSliverLaden(
+    options, partitionOfCell, graph, setup, state, summary, reporter, workers, remeshedInput);
   if (!status.ok() || summary.aborted)
   {
     return status;

@@ -273,7 +273,15 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
   }
   Worker& worker =
     this->Workers[static_cast<std::size_t>(std::max(index, 0)) % this->Workers.size()];
-  std::lock_guard<std::mutex> turn(worker.busy);
+  // Threads beyond the workers take turns: one waiting for its turn asks the run as well.
+  std::unique_lock<std::timed_mutex> turn(worker.busy, std::defer_lock);
+  while (!turn.try_lock_for(std::chrono::milliseconds(WaitingHookPeriodMilliseconds)))
+  {
+    if (watched && !this->KeepGoing())
+    {
+      return WorkerCallAbortedReason;
+    }
+  }
   if (worker.socket < 0 && !this->start(worker))
   {
     return "could not start a worker process for " + program;

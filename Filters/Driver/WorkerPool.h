@@ -77,7 +77,7 @@ private:
   {
     pid_t process = -1;
     int socket = -1;
-    std::mutex busy; // one request at a time; process and socket change only under it
+    std::timed_mutex busy; // one request at a time; process and socket change only under it
   };
   bool start(Worker& worker);
   // One request and its reply on worker `index`: `request` sends the request, `readResult` reads
