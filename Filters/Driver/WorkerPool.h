@@ -58,10 +58,10 @@ public:
   std::string partitionGraph(
     int worker, const DualGraph& graph, int parts, bool contiguous, std::vector<int>& partOfVertex);
 
-  // While a TetGen call runs, `keepGoing` is asked every WaitingHookPeriodMilliseconds (and once
-  // before the call) whether the run goes on; when it says no, the worker is killed and replaced,
-  // and the call fails with WorkerCallAbortedReason. Any thread calls it. METIS calls are short
-  // and run to the end.
+  // While a TetGen call waits for its worker's turn or for the reply, `keepGoing` is asked every
+  // WaitingHookPeriodMilliseconds (and once before the call) whether the run goes on; when it
+  // says no, the call fails with WorkerCallAbortedReason, and a worker cut short in its call is
+  // killed and replaced. Any thread calls it. METIS calls are short and run to the end.
   void setAbortCheck(std::function<bool()> keepGoing) { this->KeepGoing = std::move(keepGoing); }
   // Test hooks, read once when the pool starts. CGMESH_TEST_KILL_TETGEN_PARTITIONS, a
   // comma-separated list of partition ids: a worker that receives a call for one of them aborts
@@ -84,7 +84,7 @@ private:
   // what follows a success flag; a failure flag is followed by a message, returned. A worker that
   // breaks the exchange, dies, or sends nothing for `seconds` is replaced; the message names the
   // `program` it ran and the `piece` of work it had.
-  // `abortable`: the wait for the reply asks KeepGoing (see setAbortCheck).
+  // `abortable`: the waits for the turn and for the reply ask KeepGoing (see setAbortCheck).
   std::string exchange(int index, time_t seconds, const std::string& program,
     const std::string& piece, bool abortable, const std::function<bool(int)>& request,
     const std::function<bool(int)>& readResult);

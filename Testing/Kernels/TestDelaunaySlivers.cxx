@@ -287,6 +287,7 @@ void test_sliver_laden_mesh_conforms_across_threads()
   CHECK(sliversAfterSweep < 0.25 * sliversWithout);
 }
 
+// How many sliver-laden-input-kept warnings the run gave.
 std::size_t keptSliversWarnings(const AdaptationResult& result)
 {
   return static_cast<std::size_t>(
