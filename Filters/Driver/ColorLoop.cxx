@@ -7,8 +7,8 @@
 #include "ParallelFor.h"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
-#include <optional>
 
 namespace cgmesh
 {
@@ -241,12 +241,16 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
   // TetGen calls can take minutes: the calling thread, its own done, keeps polling the abort
   // hook (which also reports progress again) until the others end, and an abort cuts their
   // calls short (WorkerPool::setAbortCheck).
-  std::optional<WaitingHook> waiting;
+  std::function<void()> whileWaiting;
   if (setup.runTetGen && iteration.options.abortRequested)
   {
-    waiting.emplace([&iteration] { iteration.options.abortRequested(); });
+    whileWaiting = [&iteration]
+    {
+      iteration.options.abortRequested();
+    };
   }
-  Status status = runParallel(setup.threads, count,
+  Status status = runParallel(
+    setup.threads, count,
     [&](std::int64_t i)
     {
       const int p = members[i];
@@ -274,7 +278,8 @@ Status refineMembers(IterationContext& iteration, const std::vector<int>& member
         state.improvementLeft[p] = ImprovementLeft();
       }
       nothingToSplit = !changed;
-    });
+    },
+    whileWaiting);
   const bool beforeRefinement = setup.stage == Stage::ImproveInput;
   if (setup.remeshSweep)
   {

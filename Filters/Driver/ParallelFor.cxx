@@ -10,7 +10,6 @@
 #include <mutex>
 #include <string>
 #include <thread>
-#include <utility>
 
 namespace cgmesh
 {
@@ -27,9 +26,6 @@ int currentThreadIndex()
 
 namespace
 {
-
-// The calling thread's innermost WaitingHook, if any.
-thread_local const WaitingHook* currentWaitingHook = nullptr;
 
 // Runs body(i) and keeps the first exception's message.
 void runTask(
@@ -61,33 +57,16 @@ void runTask(
 
 } // namespace
 
-WaitingHook::WaitingHook(std::function<void()> hook)
-  : Hook(std::move(hook))
-  , Outer(currentWaitingHook)
-{
-  currentWaitingHook = this;
-}
-
-WaitingHook::~WaitingHook()
-{
-  currentWaitingHook = this->Outer;
-}
-
-void WaitingHook::operator()() const
-{
-  this->Hook();
-}
-
-Status runParallel(int threads, std::int64_t count, const std::function<void(std::int64_t)>& body)
+Status runParallel(int threads, std::int64_t count, const std::function<void(std::int64_t)>& body,
+  const std::function<void()>& whileWaiting)
 {
   bool failed = false;
   std::string message;
-  const WaitingHook* const waiting = currentWaitingHook;
-  if (waiting && threads > 1 && count > 1)
+  if (whileWaiting && threads > 1 && count > 1)
   {
-    // The same dynamic schedule by hand, one index at a time (the hook is set around loops of
-    // long tasks), and the calling thread, once it finds none left, calls the hook until every
-    // task is done, woken at once by the last; the others leave. omp_get_thread_num() would not
+    // The same dynamic schedule by hand, one index at a time, and the calling thread, once it
+    // finds none left, calls `whileWaiting` until every task is done, woken at once by the last;
+    // the others leave. omp_get_thread_num() would not
     // tell the calling thread inside a nested region, so its id is compared.
     const std::thread::id caller = std::this_thread::get_id();
     std::atomic<std::int64_t> next{ 0 };
@@ -108,11 +87,11 @@ Status runParallel(int threads, std::int64_t count, const std::function<void(std
       if (std::this_thread::get_id() == caller)
       {
         std::unique_lock<std::mutex> lock(finishing);
-        while (!allDone.wait_for(lock, std::chrono::milliseconds(WaitingHookPeriodMilliseconds),
-          [&] { return done == count; }))
+        while (!allDone.wait_for(
+          lock, std::chrono::milliseconds(WaitingPollMilliseconds), [&] { return done == count; }))
         {
           lock.unlock();
-          (*waiting)();
+          whileWaiting();
           lock.lock();
         }
       }

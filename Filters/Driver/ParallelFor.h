@@ -18,31 +18,17 @@ int resolveThreadCount(int requested);
 int currentThreadIndex();
 
 // Calls body(i) for i in [0, count) on `threads` threads, dynamically scheduled. Exceptions never
-// leave the parallel region: the first one is reported as a failed Status after the loop. While a
-// WaitingHook is set on the calling thread, that thread, once it finds no index left, calls the
-// hook every WaitingHookPeriodMilliseconds until the other threads are done, instead of waiting
-// silently.
-Status runParallel(int threads, std::int64_t count, const std::function<void(std::int64_t)>& body);
+// leave the parallel region: the first one is reported as a failed Status after the loop.
+//
+// With `whileWaiting`, for loops of long tasks (TetGen calls, which can take minutes): indices
+// are handed out one at a time, and the calling thread, once it finds none left, calls
+// `whileWaiting` every WaitingPollMilliseconds until the other threads are done, instead of
+// waiting silently (a run's progress and abort hooks may only be called on that thread).
+Status runParallel(int threads, std::int64_t count, const std::function<void(std::int64_t)>& body,
+  const std::function<void()>& whileWaiting = nullptr);
 
-// What the calling thread does while it waits in runParallel(): a run's progress and abort hooks
-// may only be called on the thread that started it, and the other threads' tasks (TetGen in a
-// worker process) can take minutes. Set for its scope on the thread that makes it, around loops
-// of long tasks only (the loop it applies to hands out one index at a time); scopes nest.
-class WaitingHook
-{
-public:
-  explicit WaitingHook(std::function<void()> hook);
-  ~WaitingHook();
-  void operator()() const;
-  WaitingHook(const WaitingHook&) = delete;
-  WaitingHook& operator=(const WaitingHook&) = delete;
-
-private:
-  std::function<void()> Hook;
-  const WaitingHook* Outer;
-};
-
-constexpr int WaitingHookPeriodMilliseconds = 100;
+// How often a wait on long tasks or on a worker process looks up from it.
+constexpr int WaitingPollMilliseconds = 100;
 
 // runParallel() on `threads` threads as the runner kernels take (Core/Tasks.h).
 ParallelFor parallelForOn(int threads);

@@ -271,11 +271,10 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
   {
     return WorkerCallAbortedReason;
   }
-  Worker& worker =
-    this->Workers[static_cast<std::size_t>(std::max(index, 0)) % this->Workers.size()];
+  Worker& worker = this->Workers[this->slotOf(index)];
   // Threads beyond the workers take turns: one waiting for its turn asks the run as well.
   std::unique_lock<std::timed_mutex> turn(worker.busy, std::defer_lock);
-  while (!turn.try_lock_for(std::chrono::milliseconds(WaitingHookPeriodMilliseconds)))
+  while (!turn.try_lock_for(std::chrono::milliseconds(WaitingPollMilliseconds)))
   {
     if (watched && !this->KeepGoing())
     {
@@ -303,7 +302,7 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
     for (;;)
     {
       pollfd reply{ worker.socket, POLLIN, 0 };
-      if (::poll(&reply, 1, WaitingHookPeriodMilliseconds) != 0)
+      if (::poll(&reply, 1, WaitingPollMilliseconds) != 0)
       {
         break; // readable, closed, or an error: the receive below tells which
       }
@@ -353,9 +352,8 @@ std::string WorkerPool::runTetGen(
 {
   const bool kill =
     std::binary_search(this->KillPartitions.begin(), this->KillPartitions.end(), partition);
-  const bool stall = this->StallWorker >= 0 &&
-    static_cast<std::size_t>(std::max(index, 0)) % this->Workers.size() ==
-      static_cast<std::size_t>(this->StallWorker);
+  const bool stall =
+    this->StallWorker >= 0 && this->slotOf(index) == static_cast<std::size_t>(this->StallWorker);
   const std::int32_t kind = kill ? DieAfterReading : stall ? StallAfterReading : RunTetGen;
   return this->exchange(
     index, static_cast<time_t>(tetgenTimeLimitSeconds(in, switches)), "TetGen", "partition", true,

@@ -16,6 +16,7 @@
 #include "Partitioning/DualGraph.h"
 #include "WorkerSpawner.h"
 
+#include <algorithm>
 #include <ctime>
 #include <functional>
 #include <mutex>
@@ -59,7 +60,7 @@ public:
     int worker, const DualGraph& graph, int parts, bool contiguous, std::vector<int>& partOfVertex);
 
   // While a TetGen call waits for its worker's turn or for the reply, `keepGoing` is asked every
-  // WaitingHookPeriodMilliseconds (and once before the call) whether the run goes on; when it
+  // WaitingPollMilliseconds (and once before the call) whether the run goes on; when it
   // says no, the call fails with WorkerCallAbortedReason, and a worker cut short in its call is
   // killed and replaced. Any thread calls it. METIS calls are short and run to the end.
   void setAbortCheck(std::function<bool()> keepGoing) { this->KeepGoing = std::move(keepGoing); }
@@ -80,6 +81,11 @@ private:
     std::timed_mutex busy; // one request at a time; process and socket change only under it
   };
   bool start(Worker& worker);
+  // The worker that calls for worker `index` go to.
+  std::size_t slotOf(int index) const
+  {
+    return static_cast<std::size_t>(std::max(index, 0)) % this->Workers.size();
+  }
   // One request and its reply on worker `index`: `request` sends the request, `readResult` reads
   // what follows a success flag; a failure flag is followed by a message, returned. A worker that
   // breaks the exchange, dies, or sends nothing for `seconds` is replaced; the message names the
