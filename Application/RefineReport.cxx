@@ -243,6 +243,9 @@ void printImprovement(const RefineStatistics& statistics, std::ostream& stream)
          << std::setw(24) << "edge removals" << statistics.edgeRemovals << "\n"
          << std::setw(24) << "face swaps" << statistics.faceSwaps << "\n"
          << std::setw(24) << "vertex moves" << statistics.vertexMoves << "\n"
+         << std::setw(24) << "of them on the input" << statistics.inputEdgeRemovals
+         << " edge removals, " << statistics.inputFaceSwaps << " face swaps, "
+         << statistics.inputVertexMoves << " vertex moves\n"
          << std::setw(24) << "edge collapses" << statistics.edgeCollapses << "\n"
          << std::setw(24) << "improve seconds" << std::fixed << std::setprecision(4)
          << phaseSeconds(statistics, "improve") << std::defaultfloat << " (" << std::setprecision(3)
@@ -325,6 +328,9 @@ void writeImprovementJson(const RefineStatistics& statistics, std::ostream& file
        << ", \"edgeRemovals\": " << statistics.edgeRemovals
        << ", \"faceSwaps\": " << statistics.faceSwaps
        << ", \"vertexMoves\": " << statistics.vertexMoves
+       << ", \"input\": {\"edgeRemovals\": " << statistics.inputEdgeRemovals
+       << ", \"faceSwaps\": " << statistics.inputFaceSwaps
+       << ", \"vertexMoves\": " << statistics.inputVertexMoves << "}"
        << ", \"edgeCollapses\": " << statistics.edgeCollapses
        << ", \"seconds\": " << jsonNumber(phaseSeconds(statistics, "improve"))
        << ", \"shareOfTotal\": " << jsonNumber(improveShare(statistics)) << "},\n"
@@ -400,6 +406,9 @@ void collectFilterStatistics(
   statistics.edgeRemovals = summary.edgeRemovals;
   statistics.faceSwaps = summary.faceSwaps;
   statistics.vertexMoves = summary.vertexMoves;
+  statistics.inputEdgeRemovals = summary.inputEdgeRemovals;
+  statistics.inputFaceSwaps = summary.inputFaceSwaps;
+  statistics.inputVertexMoves = summary.inputVertexMoves;
   statistics.edgeCollapses = summary.edgeCollapses;
   statistics.partitionTaskSeconds = summary.partitionTaskSeconds;
   statistics.warnings = summary.warnings;

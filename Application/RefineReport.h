@@ -74,6 +74,9 @@ struct RefineStatistics
   std::int64_t edgeRemovals = 0; // improvement operations
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
+  std::int64_t inputEdgeRemovals = 0; // of those, improving the input before refinement
+  std::int64_t inputFaceSwaps = 0;
+  std::int64_t inputVertexMoves = 0;
   std::int64_t edgeCollapses = 0;           // coarsening
   std::string compression;                  // of OUT's arrays: "none", "lz4" or "zlib"
   std::vector<double> partitionTaskSeconds; // iteration * partitions + partition

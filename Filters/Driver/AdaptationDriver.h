@@ -61,6 +61,10 @@ struct AdaptationSummary
   std::int64_t edgeCollapses = 0;   // coarsening
   std::int64_t faceSwaps = 0;
   std::int64_t vertexMoves = 0;
+  // Of those, the ones improving the input before refinement (ImproveInput).
+  std::int64_t inputEdgeRemovals = 0;
+  std::int64_t inputFaceSwaps = 0;
+  std::int64_t inputVertexMoves = 0;
   std::int64_t poorTets = 0; // tets below the improvement target when first looked at
   EdgeSizeReport edgeSizes;  // with a size field: the output's edges against it
   // Seconds each partition's heal and refinement took, per iteration: entry

@@ -7,6 +7,7 @@
 #include "Core/Geometry.h"
 #include "Core/TetQuality.h"
 #include "CubeGenerator.h"
+#include "FinFetGenerator.h"
 #include "MeshChecks.h"
 #include "Refinement/SizeField.h"
 #include "ResultComparison.h"
@@ -364,6 +365,57 @@ void test_coarsening_where_the_field_is_coarse()
   }
 }
 
+// A size field is for the refined mesh: improving the input before refinement (ImproveInput)
+// neither coarsens it nor refuses changes that make edges longer than sqrt(2) h, which refinement
+// splits anyway. So on the poor input of a TetGen FinFET, a field finer than every edge (which
+// would refuse nearly every change) and one coarser than every edge (which refuses none) see the
+// input improved alike. Both fields are uniform, a power of 2 apart, so the partitions balanced
+// on the output they forecast are the same.
+void test_input_is_improved_as_without_a_size_field()
+{
+  TetMesh input;
+  CHECK(generateFinFetWithTetGen(15000, input).ok());
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+  for (const Tet& tet : input.tets)
+  {
+    for (const auto& corners : TetEdgeCorners)
+    {
+      const double squared = squaredEdgeLength(input, tet[corners[0]], tet[corners[1]]);
+      shortest = std::min(shortest, squared);
+      longest = std::max(longest, squared);
+    }
+  }
+  const double fine = 0.5 * std::sqrt(shortest);
+  double coarse = fine;
+  while (coarse < std::sqrt(longest))
+  {
+    coarse *= 2;
+  }
+  AdaptationOptions options;
+  options.numberOfPartitions = 32;
+  options.numberOfThreads = 2;
+  options.numberOfIterations = 1;
+  options.coarsen = false;
+  AdaptationSummary improved[2];
+  for (int run = 0; run < 2; ++run)
+  {
+    TetMesh sized = input;
+    sized.sizes.assign(input.numberOfPoints(), run == 0 ? fine : coarse);
+    AdaptationResult result;
+    CHECK(adaptMesh(sized, options, result).ok());
+    CHECK(result.summary.plan.sizeField);
+    CHECK_EQUAL(result.mesh.numberOfTets() > input.numberOfTets(), run == 0); // fine refines
+    cgmesh_test::checkValidAndConserving(sized, result.mesh);
+    improved[run] = result.summary;
+  }
+  CHECK(improved[0].inputEdgeRemovals > 0);
+  CHECK(improved[0].inputEdgeRemovals <= improved[0].edgeRemovals);
+  CHECK(improved[0].inputVertexMoves <= improved[0].vertexMoves);
+  CHECK_EQUAL(improved[0].inputEdgeRemovals, improved[1].inputEdgeRemovals);
+  CHECK_EQUAL(improved[0].inputFaceSwaps, improved[1].inputFaceSwaps);
+  CHECK_EQUAL(improved[0].inputVertexMoves, improved[1].inputVertexMoves);
+}
+
 void test_bad_size_fields_are_refused()
 {
   AdaptationOptions options;
@@ -500,6 +552,7 @@ int main()
   test_edge_measure_counts_every_edge_once();
   test_delaunay_refinement_to_a_graded_field();
   test_coarsening_where_the_field_is_coarse();
+  test_input_is_improved_as_without_a_size_field();
   test_bad_size_fields_are_refused();
   test_refinement_regions_and_box();
   test_settled_partitions_are_not_read_again();

@@ -360,6 +360,10 @@ def test_improvement_options(cgmesh, scratch):
     check(improvement["enabled"] is True and improvement["passes"] == 2, "improvement defaults")
     check(improvement["edgeRemovals"] + improvement["faceSwaps"] + improvement["vertexMoves"] > 0,
           "the default run improved nothing")
+    check(all(0 <= improvement["input"][key] <= improvement[key]
+              for key in ("edgeRemovals", "faceSwaps", "vertexMoves")),
+          "the input's improvement counts are not part of the counts")
+    check("of them on the input" in table, "the table lacks the input's improvement counts")
     check(improvement["seconds"] == improved["seconds"]["improve"]
           and 0 < improvement["shareOfTotal"] < 1, "improve seconds and share in stats")
     check_quality_summary(improved, refined, "improved")
@@ -367,8 +371,8 @@ def test_improvement_options(cgmesh, scratch):
     for name in ("passes-0", "not-improved"):
         statistics, _, output = runs[name]
         figures = statistics["improvement"]
-        check(figures["edgeRemovals"] == figures["faceSwaps"] == figures["vertexMoves"] == 0,
-              name + ": improvement counts are not 0")
+        check(figures["edgeRemovals"] == figures["faceSwaps"] == figures["vertexMoves"] == 0
+              and not any(figures["input"].values()), name + ": improvement counts are not 0")
         check_quality_summary(statistics, output, name)
     check(runs["not-improved"][0]["improvement"]["enabled"] is False, "--no-improve in stats")
     check("improvement             off" in runs["not-improved"][1], "the table lacks 'off'")
