@@ -89,7 +89,7 @@ Status improveInputTets(double progressStart, double progressEnd, const Adaptati
   // makes an edge longer than sqrt(2) h (refinement splits those anyway). Measured on the FinFET
   // with the size-field benchmark's field (h a quarter of the edge length in the channel), it
   // barred most edge removals there: the input kept poorer tets, which refinement multiplied,
-  // and the run took 12-14% longer for a minimum dihedral p1 of 21.72 against 21.95 degrees.
+  // and the run took 12-16% longer for a minimum dihedral p1 of 21.72 against 21.95 degrees.
   improveOnly.improvement.coarsen = false;
   improveOnly.sizeField = false;
   improveOnly.numberOfIterations = 1;
