@@ -371,7 +371,7 @@ void test_coarsening_where_the_field_is_coarse()
 // would refuse nearly every change) and one coarser than every edge (which refuses none) see the
 // input improved alike. Both fields are uniform, a power of 2 apart, so the partitions balanced
 // on the output they forecast are the same.
-void test_input_is_improved_as_without_a_size_field()
+void test_input_improvement_ignores_the_size_field()
 {
   TetMesh input;
   CHECK(generateFinFetWithTetGen(15000, input).ok());
@@ -552,7 +552,7 @@ int main()
   test_edge_measure_counts_every_edge_once();
   test_delaunay_refinement_to_a_graded_field();
   test_coarsening_where_the_field_is_coarse();
-  test_input_is_improved_as_without_a_size_field();
+  test_input_improvement_ignores_the_size_field();
   test_bad_size_fields_are_refused();
   test_refinement_regions_and_box();
   test_settled_partitions_are_not_read_again();
