@@ -472,6 +472,14 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
     return status;
   }
   ColorLoopSetup setup = refinementSetup(options, summary);
+  // A selection promises that the tets outside change only by refinement's closure: improvement
+  // leaves every tet with a corner outside it as it is.
+  std::vector<char> keptPoints;
+  if (summary.plan.restricted())
+  {
+    keptPoints = pointsOutsideSelection(input.sizes);
+    setup.improvement.keptPoints = &keptPoints;
+  }
   if (options.method == RefinementMethod::Delaunay)
   {
     attachTetGen(options, setup, summary, workers.get());

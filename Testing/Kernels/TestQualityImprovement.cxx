@@ -11,6 +11,7 @@
 #include "MeshChecks.h"
 #include "PhaseReporter.h"
 #include "Refinement/PartitionRefiner.h"
+#include "Refinement/SizeField.h"
 #include "ResultComparison.h"
 #include "TestHarness.h"
 #include "Validation/MeshValidation.h"
@@ -19,6 +20,8 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
+#include <sstream>
 
 using namespace cgmesh;
 
@@ -568,6 +571,115 @@ void test_input_improved_before_refinement()
   CHECK(cgmesh_test::identicalResults(selected, selectedWithout));
 }
 
+// A tet's corners as coordinates, in lexicographic order: the same key in two meshes whatever
+// their point numbering.
+std::array<double, 12> cornerKey(const TetMesh& mesh, const Tet& tet)
+{
+  std::array<std::array<double, 3>, 4> corners;
+  for (int k = 0; k < 4; ++k)
+  {
+    std::copy_n(mesh.point(tet[k]), 3, corners[k].begin());
+  }
+  std::sort(corners.begin(), corners.end());
+  std::array<double, 12> key;
+  for (int k = 0; k < 4; ++k)
+  {
+    std::copy(corners[k].begin(), corners[k].end(), key.begin() + 3 * k);
+  }
+  return key;
+}
+
+// A refinement selection promises the tets outside it change only where refinement's closure
+// templates split them, and improvement keeps it: on the TetGen FinFET (poor tets everywhere),
+// every input tet with at most one corner in the selection (so no edge to split) is in the output
+// exactly as it was, although poor ones are among them and improvement works inside the
+// selection. The output stays valid and the same for 1 and 2 threads.
+void test_selection_keeps_the_tets_outside_it()
+{
+  TetMesh input;
+  CHECK(generateFinFetWithTetGen(15000, input).ok());
+  // The box: everything below the middle height, written exactly (17 digits) for the option.
+  double low = HUGE_VAL, high = -HUGE_VAL;
+  for (PointId p = 0; p < input.numberOfPoints(); ++p)
+  {
+    low = std::min(low, input.point(p)[2]);
+    high = std::max(high, input.point(p)[2]);
+  }
+  const std::array<double, 6> lowerHalf = { -1e9, -1e9, -1e9, 1e9, 1e9, 0.5 * (low + high) };
+  std::ostringstream boxText;
+  boxText.precision(17);
+  for (int k = 0; k < 6; ++k)
+  {
+    boxText << (k ? "," : "") << lowerHalf[k];
+  }
+  struct Case
+  {
+    const char* regions;
+    std::string box;
+  };
+  for (const Case& selection : { Case{ "2", "" }, Case{ "", boxText.str() } })
+  {
+    AdaptationOptions options;
+    options.refinementRegions = selection.regions;
+    options.refinementBox = selection.box;
+    options.numberOfPartitions = 32;
+    options.edgeLengthFactor = 0.5;
+    options.numberOfThreads = 1;
+    AdaptationResult result;
+    CHECK(adaptMesh(input, options, result).ok());
+    cgmesh_test::checkValidAndConserving(input, result.mesh);
+    CHECK(result.summary.edgeRemovals + result.summary.vertexMoves > 0);
+
+    std::array<double, 6> box;
+    const bool byBox = !selection.box.empty();
+    if (byBox)
+    {
+      std::copy(lowerHalf.begin(), lowerHalf.end(), box.begin());
+    }
+    const std::vector<char> selected =
+      byBox ? selectTets(input, {}, &box) : selectTets(input, { 2 }, nullptr);
+    std::vector<char> selectedPoint(input.numberOfPoints(), 0);
+    for (std::size_t t = 0; t < input.tets.size(); ++t)
+    {
+      for (PointId p : input.tets[t])
+      {
+        selectedPoint[p] |= selected[t];
+      }
+    }
+    std::set<std::array<double, 12>> outputTets;
+    for (const Tet& tet : result.mesh.tets)
+    {
+      outputTets.insert(cornerKey(result.mesh, tet));
+    }
+    int outside = 0, poorOutside = 0, changed = 0;
+    for (const Tet& tet : input.tets)
+    {
+      int selectedCorners = 0;
+      for (PointId p : tet)
+      {
+        selectedCorners += selectedPoint[p];
+      }
+      if (selectedCorners > 1)
+      {
+        continue;
+      }
+      ++outside;
+      poorOutside += meanRatio(input.point(tet[0]), input.point(tet[1]), input.point(tet[2]),
+                       input.point(tet[3])) < 0.5;
+      changed += outputTets.count(cornerKey(input, tet)) == 0;
+    }
+    std::cout << "selection " << (byBox ? "box " + selection.box : std::string("region 2")) << ": "
+              << outside << " input tets outside, " << poorOutside << " of them poor, " << changed
+              << " changed; " << result.summary.edgeRemovals << " edge removals\n";
+    CHECK(outside > 0 && poorOutside > 0);
+    CHECK_EQUAL(changed, 0);
+
+    options.numberOfThreads = 2;
+    AdaptationResult parallel;
+    CHECK(adaptMesh(input, options, parallel).ok());
+    CHECK(cgmesh_test::identicalResults(result, parallel));
+  }
+}
 } // namespace
 
 // Slivers at a vertex that lies on a box face of the first sweep's layout along x and of the
@@ -656,6 +768,7 @@ int main()
   test_device_refinement_with_improvement();
   test_improvement_over_several_passes();
   test_input_improved_before_refinement();
+  test_selection_keeps_the_tets_outside_it();
   test_sweeps_reach_a_vertex_both_layouts_cut();
   return cgmesh_test::finish("TestQualityImprovement");
 }

@@ -49,6 +49,12 @@ struct ImprovementParameters
   // When positive, no change may create a tet larger than this (nor than the largest it replaces):
   // Delaunay refinement's volume bound survives the improvement.
   double maximumVolume = 0;
+  // When set: flags, by global point id, the input points outside a RefinementRegions or
+  // RefinementBox selection (pointsOutsideSelection()). A tet with such a corner is neither work
+  // nor handed to an improver, so it stays exactly as it is: the tets outside a selection change
+  // only where refinement's closure templates split them. Points past the flags' end, and
+  // provisional ones, are new, made inside the selection.
+  const std::vector<char>* keptPoints = nullptr;
 };
 
 struct ImprovementStatistics
@@ -86,6 +92,25 @@ struct PartitionPoints
     return pointSize(*globalSizes, *provisionalSizes, id);
   }
 };
+
+// Whether `tet` has a corner improvement must leave where it is
+// (ImprovementParameters::keptPoints).
+inline bool isKept(const Tet& tet, const ImprovementParameters& parameters)
+{
+  const std::vector<char>* kept = parameters.keptPoints;
+  if (!kept)
+  {
+    return false;
+  }
+  for (PointId id : tet)
+  {
+    if (!isProvisional(id) && static_cast<std::size_t>(id) < kept->size() && (*kept)[id])
+    {
+      return true;
+    }
+  }
+  return false;
+}
 
 // Whether vertex `id` may be collapsed (ImprovementParameters::collapsibleVertices).
 inline bool mayCollapse(PointId id, const ImprovementParameters& parameters)

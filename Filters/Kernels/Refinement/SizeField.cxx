@@ -353,4 +353,14 @@ void restrictToSelection(const TetMesh& mesh, const std::vector<char>& selectedT
   }
 }
 
+std::vector<char> pointsOutsideSelection(const std::vector<double>& sizes)
+{
+  std::vector<char> outside(sizes.size(), 0);
+  for (std::size_t p = 0; p < sizes.size(); ++p)
+  {
+    outside[p] = std::isinf(sizes[p]) ? 1 : 0;
+  }
+  return outside;
+}
+
 } // namespace cgmesh

@@ -85,6 +85,10 @@ std::vector<char> selectTets(
 void restrictToSelection(const TetMesh& mesh, const std::vector<char>& selectedTets,
   double threshold, std::vector<double>& sizes);
 
+// Flags the points restrictToSelection() put outside the selection (those of infinite size; a
+// size field given by the user is finite everywhere), for ImprovementParameters::keptPoints.
+std::vector<char> pointsOutsideSelection(const std::vector<double>& sizes);
+
 } // namespace cgmesh
 
 #endif
