@@ -4,8 +4,10 @@
 #include "Core/Geometry.h"
 #include "Core/TetMesh.h"
 #include "Refinement/TetGenRefiner.h"
+#include "cgmeshTriangleCells.h"
 #include "cgmeshVTKConversion.h"
 
+#include "vtkNew.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -132,9 +134,19 @@ std::string nothingRefinedWarning(
   vtkUnstructuredGrid* input, const AdaptationOptions& options, const RefineStatistics& statistics)
 {
   // Refinement adds points; improvement and the input repairs never do.
+  if (statistics.outputPoints > statistics.inputPoints)
+    return std::string();
+  // The tets alone: tagged triangles are refined with the tets' faces, not by themselves.
+  vtkNew<vtkUnstructuredGrid> tets;
+  vtkUnstructuredGrid* volume = input;
+  if (hasTriangles(input))
+  {
+    TriangleCells cells;
+    separateTriangles(input, tets, cells);
+    volume = tets;
+  }
   TetMesh mesh;
-  if (statistics.outputPoints > statistics.inputPoints ||
-    !convertToTetMesh(input, std::string(), mesh).ok())
+  if (!convertToTetMesh(volume, std::string(), mesh).ok())
     return std::string();
   std::ostringstream text;
   text << std::setprecision(6) << "nothing was refined: ";
@@ -151,6 +163,22 @@ std::string nothingRefinedWarning(
     text << "TetGen inserted no point under the volume bound " << statistics.volumeBound
          << " and the radius-edge bound " << options.radiusEdgeRatio
          << " (the largest input tet has volume " << largestVolume(mesh) << ")";
+    return text.str();
+  }
+  // With a selection, only edges between two points of selected tets count.
+  if (!options.refinementRegions.empty() || !options.refinementBox.empty())
+  {
+    text << "no edge between two points of the selected tets (";
+    if (!options.refinementRegions.empty())
+      text << "--refine-regions " << options.refinementRegions
+           << (options.refinementBox.empty() ? "" : ", ");
+    if (!options.refinementBox.empty())
+      text << "--refine-box " << options.refinementBox;
+    text << ") is longer than ";
+    if (!options.sizeArrayName.empty())
+      text << "sqrt(2) times the size field '" << options.sizeArrayName << "' at its midpoint";
+    else
+      text << "the threshold " << statistics.edgeLengthThreshold;
     return text.str();
   }
   if (!options.sizeArrayName.empty())

@@ -237,7 +237,10 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
   RefineStatistics statistics = collectStatistics(arguments, filter, input, output);
   const std::string nothingRefined = nothingRefinedWarning(input, arguments.options, statistics);
   if (!nothingRefined.empty())
+  {
     std::cerr << "cgmesh: warning: " << nothingRefined << "\n";
+    statistics.warnings.push_back({ WarningKind::NothingRefined, -1, nothingRefined });
+  }
   removeRunDependentFieldData(output);
 
   stopwatch.lap();

@@ -19,7 +19,8 @@ enum class WarningKind
   DelaunayFallback,          // TetGen failed on a partition, refined by templates instead
   SweepRemeshFailed,         // TetGen failed on a box of the Delaunay sweep, left as refined
   InputRemeshFailed,         // TetGen failed on a cluster of the input's slivers, left as it was
-  SliverLadenInputKept       // a sliver-laden input was refined as given
+  SliverLadenInputKept,      // a sliver-laden input was refined as given
+  NothingRefined             // the run added no point (the command line's check of its output)
 };
 
 // The kind's name in reports ("delaunay-fallback").
@@ -45,6 +46,8 @@ inline const char* warningKindName(WarningKind kind)
       return "input-remesh-failed";
     case WarningKind::SliverLadenInputKept:
       return "sliver-laden-input-kept";
+    case WarningKind::NothingRefined:
+      return "nothing-refined";
   }
   return "unknown";
 }

@@ -97,6 +97,40 @@ Status parseSelection(const AdaptationOptions& options, AdaptationPlan& plan)
   return Status::success();
 }
 
+// Every region RefinementRegions lists must be one of the input's: a typo would otherwise select
+// nothing and pass silently, as an unknown array name would.
+Status checkSelectedRegionsExist(const AdaptationOptions& options, const TetMesh& input)
+{
+  AdaptationPlan selection;
+  if (!parseSelection(options, selection).ok() || !input.hasRegions())
+  {
+    return Status::success(); // reported by checkOptions()
+  }
+  for (int region : selection.refinementRegions)
+  {
+    if (std::find(input.regions.begin(), input.regions.end(), region) != input.regions.end())
+    {
+      continue;
+    }
+    std::vector<int> present = input.regions;
+    std::sort(present.begin(), present.end());
+    present.erase(std::unique(present.begin(), present.end()), present.end());
+    std::string listed;
+    constexpr std::size_t Shown = 20;
+    for (std::size_t k = 0; k < std::min(present.size(), Shown); ++k)
+    {
+      listed += (k > 0 ? ", " : "") + std::to_string(present[k]);
+    }
+    if (present.size() > Shown)
+    {
+      listed += ", ... (" + std::to_string(present.size()) + " in all)";
+    }
+    return invalidOption("RefinementRegions lists region " + std::to_string(region) +
+      ", which no tet has; the region array's values are " + listed);
+  }
+  return Status::success();
+}
+
 Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool hasSizes, bool empty)
 {
   AdaptationPlan selection;
@@ -156,17 +190,34 @@ Status checkOptions(const AdaptationOptions& options, bool hasRegions, bool hasS
   return Status::success();
 }
 
-// What partitionByRegion() will make: each region min(partitionsPerRegion, its tets) parts.
-int partitionsByRegion(const TetMesh& input, int partitionsPerRegion)
+// What partitionByRegion() will make: each region min(partitionsPerRegion, its tets) parts. A
+// region with fewer tets than asked for is named in a warning, as a reduced NumberOfPartitions is.
+int partitionsByRegion(
+  const TetMesh& input, int partitionsPerRegion, std::vector<AdaptationWarning>& warnings)
 {
   std::vector<int> regions = input.regions;
   std::sort(regions.begin(), regions.end());
   std::int64_t total = 0;
+  int reducedRegions = 0;
+  std::string firstReduced;
   for (auto first = regions.begin(); first != regions.end();)
   {
     const auto last = std::upper_bound(first, regions.end(), *first);
+    if (last - first < partitionsPerRegion && reducedRegions++ == 0)
+    {
+      firstReduced =
+        "region " + std::to_string(*first) + " has " + std::to_string(last - first) + " tetrahedra";
+    }
     total += std::min<std::int64_t>(partitionsPerRegion, last - first);
     first = last;
+  }
+  if (reducedRegions > 0)
+  {
+    warnings.push_back({ WarningKind::PartitionsReduced, -1,
+      "requested " + std::to_string(partitionsPerRegion) + " partitions per region, but " +
+        std::to_string(reducedRegions) + (reducedRegions == 1 ? " region has" : " regions have") +
+        " fewer tetrahedra (" + firstReduced + "), cut into one partition per tetrahedron; " +
+        "using " + std::to_string(total) + " partitions in all" });
   }
   return static_cast<int>(total);
 }
@@ -215,7 +266,7 @@ int resolvePartitions(const TetMesh& input, const AdaptationOptions& options, do
   }
   if (options.partitionByRegion)
   {
-    return partitionsByRegion(input, options.partitionsPerRegion);
+    return partitionsByRegion(input, options.partitionsPerRegion, warnings);
   }
   if (options.numberOfPartitions == 0)
   {
@@ -345,7 +396,9 @@ Status checkOptionsAndInput(const TetMesh& input, const AdaptationOptions& optio
       return sizes;
     }
   }
-  return checkOptions(options, input.hasRegions(), input.hasSizes(), input.tets.empty());
+  const Status checked =
+    checkOptions(options, input.hasRegions(), input.hasSizes(), input.tets.empty());
+  return checked.ok() ? checkSelectedRegionsExist(options, input) : checked;
 }
 
 AdaptationPlan resolvePlan(

@@ -528,6 +528,7 @@ void test_bad_selections_are_refused()
   const Case cases[] = { { &input, "2,x", "", RefinementMethod::Template },
     { &input, "2,", "", RefinementMethod::Template },
     { &input, "2.5", "", RefinementMethod::Template },
+    { &input, "2,99", "", RefinementMethod::Template }, // no tet of region 99
     { &input, "", "0,0,0,1,1", RefinementMethod::Template },
     { &input, "", "1,0,0,0,1,1", RefinementMethod::Template },
     { &withoutRegions, "2", "", RefinementMethod::Template },
@@ -541,6 +542,13 @@ void test_bad_selections_are_refused()
     AdaptationResult result;
     CHECK(adaptMesh(*bad.mesh, options, result).kind() == ErrorKind::InvalidOption);
   }
+  // The refusal of an unknown region names it and the regions there are.
+  AdaptationOptions options;
+  options.refinementRegions = "2,99";
+  AdaptationResult result;
+  const Status unknown = adaptMesh(input, options, result);
+  CHECK(unknown.message().find("region 99, which no tet has") != std::string::npos);
+  CHECK(unknown.message().find("values are 1, 2") != std::string::npos);
 }
 
 } // namespace

@@ -190,6 +190,18 @@ def test_partition_by_region(cgmesh, scratch):
     check(statistics["partitionsPerRegion"] == 2, "partitionsPerRegion in stats")
     check(statistics["partitions"] > 1, "partitions by region: %d" % statistics["partitions"])
     check_color_populations(statistics, "partition by region")
+    # More partitions per region than any region has tets: one per tet, with a warning.
+    result = run(cgmesh, "refine", finfet, os.path.join(scratch, "finfet-many.vtu"),
+                 "--region-array", "Material", "--partition-by-region",
+                 "--partitions-per-region", "100000", "--stats", stats)
+    check(result.returncode == 0 and "requested 100000 partitions per region, but" in
+          result.stderr, "--partitions-per-region 100000: %r" % result.stderr)
+    with open(stats) as handle:
+        many = json.load(handle)
+    check(many["partitions"] == many["input"]["cells"] and
+          [warning["kind"] for warning in many["warnings"]] == ["partitions-reduced"],
+          "--partitions-per-region 100000: %d partitions, warnings %s"
+          % (many["partitions"], many["warnings"]))
     result = run(cgmesh, "check", refined, "--region-array", "Material")
     check(result.returncode == 0, "check the refined FinFET: " + result.stdout)
 
@@ -611,6 +623,9 @@ def test_nothing_refined(cgmesh, scratch):
     with open(stats) as handle:
         statistics = json.load(handle)
     check(statistics["output"]["cells"] == statistics["input"]["cells"], "factor 5 refined")
+    check([warning["kind"] for warning in statistics["warnings"]] == ["nothing-refined"],
+          "factor 5: the stats' warnings are %s" % statistics["warnings"])
+    check("nothing-refined 1" in result.stdout, "factor 5: the table does not count the warning")
     found = re.search(r"cgmesh: warning: nothing was refined: no edge is longer than the threshold "
                       r"(\S+) \(--edge-length-factor 5 x the mean edge length (\S+)\); the longest "
                       r"edge is (\S+)", result.stderr)
@@ -627,6 +642,16 @@ def test_nothing_refined(cgmesh, scratch):
     check(result.returncode == 0 and "cgmesh: warning: nothing was refined: TetGen inserted no "
           "point under the volume bound 10" in result.stderr,
           "Delaunay, nothing refined: %r" % result.stderr)
+    # A box that selects no tet: every long edge lies outside it.
+    result = run(cgmesh, "refine", cube, os.path.join(scratch, "unrefined-box.vtu"),
+                 "--refine-box", "5,5,5,6,6,6", "--stats", stats)
+    check(result.returncode == 0 and "cgmesh: warning: nothing was refined: no edge between two "
+          "points of the selected tets (--refine-box 5,5,5,6,6,6) is longer than the threshold"
+          in result.stderr, "empty box, nothing refined: %r" % result.stderr)
+    with open(stats) as handle:
+        statistics = json.load(handle)
+    check(statistics["output"]["cells"] == statistics["input"]["cells"] and
+          statistics["improvement"]["edgeRemovals"] == 0, "an empty box changed the mesh")
     result = run(cgmesh, "refine", cube, os.path.join(scratch, "refined-again.vtu"))
     check("nothing was refined" not in result.stderr, "a refining run warned: " + result.stderr)
 

@@ -192,6 +192,12 @@ def test_file_formats(cgmesh, gmsh, scratch, mesh):
                                 text=True)
         check(result.returncode == 0 and "Error" not in result.stdout,
               "%s: Gmsh does not read the output: %s" % (description, result.stdout[-1500:]))
+    # Nothing to split: the tets alone decide, the tagged triangles do not hide the warning.
+    result = run(cgmesh, "refine", msh, os.path.join(scratch, "unrefined.msh"),
+                 "--max-edge-length", "100")
+    check(result.returncode == 0 and "cgmesh: warning: nothing was refined: no edge is longer "
+          "than the threshold 100" in result.stderr and "nothing-refined 1" in result.stdout,
+          "tagged triangles, nothing refined: %r" % result.stderr)
     result = run(cgmesh, "refine", msh, os.path.join(scratch, "bad.msh"), "--msh-version", "3")
     check(result.returncode != 0 and "--msh-version" in result.stderr,
           "--msh-version 3 accepted: " + result.stderr)
