@@ -5,6 +5,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <map>
 #include <set>
@@ -404,6 +405,9 @@ Status applyRefineOption(const std::string& name, const std::string& value, Refi
     if (value != "4.1" && value != "2.2")
       return Status::failure(
         "unknown Gmsh format '" + value + "' for --msh-version (use 4.1 or 2.2)");
+    if (std::filesystem::path(parsed.outputFile).extension() != ".msh")
+      return Status::failure("--msh-version " + value +
+        " needs a .msh output: only Gmsh files have a format version to choose");
     parsed.mshVersion = std::stod(value);
     return Status::success();
   }

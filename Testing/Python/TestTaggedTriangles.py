@@ -198,6 +198,9 @@ def test_file_formats(cgmesh, gmsh, scratch, mesh):
     check(result.returncode == 0 and "cgmesh: warning: nothing was refined: no edge is longer "
           "than the threshold 100" in result.stderr and "nothing-refined 1" in result.stdout,
           "tagged triangles, nothing refined: %r" % result.stderr)
+    result = run(cgmesh, "refine", msh, os.path.join(scratch, "bad.vtu"), "--msh-version", "2.2")
+    check(result.returncode == 2 and "needs a .msh output" in result.stderr,
+          "--msh-version for a .vtu output accepted: " + result.stderr)
     result = run(cgmesh, "refine", msh, os.path.join(scratch, "bad.msh"), "--msh-version", "3")
     check(result.returncode != 0 and "--msh-version" in result.stderr,
           "--msh-version 3 accepted: " + result.stderr)
