@@ -17,6 +17,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <unistd.h>
 #include <vector>
 
@@ -41,6 +44,95 @@ std::vector<char> cString(const std::string& text)
   return std::vector<char>(text.c_str(), text.c_str() + text.size() + 1);
 }
 
+// The whitespace-separated words of `line` before any '#' comment.
+std::vector<std::string> wordsOf(const std::string& line)
+{
+  std::istringstream stream(line.substr(0, line.find('#')));
+  std::vector<std::string> words;
+  for (std::string word; stream >> word;)
+    words.push_back(word);
+  return words;
+}
+
+// Checks the layout TetGen's own reader takes for granted (it crashes or throws on anything else):
+// a header whose first number is the count of records, then at least that many records of at
+// least `wordsPerRecord(header)` numbers each. The values themselves are TetGen's to read.
+template <typename WordsPerRecord>
+Status checkRecords(const std::string& fileName, WordsPerRecord wordsPerRecord)
+{
+  std::ifstream file(fileName);
+  if (!file)
+    return Status::failure("'" + fileName + "': cannot be opened");
+  std::vector<std::string> header;
+  std::string line;
+  while (header.empty() && std::getline(file, line))
+    header = wordsOf(line);
+  long long count = -1;
+  std::size_t needed = 0;
+  try
+  {
+    count = header.empty() ? -1 : std::stoll(header[0]);
+    needed = wordsPerRecord(header);
+  }
+  catch (const std::exception&)
+  {
+    count = -1;
+  }
+  if (count < 0 || needed == 0)
+    return Status::failure("'" + fileName +
+      "': not a TetGen file (its first line must give the count of records that follow)");
+  for (long long record = 0; record < count; ++record)
+  {
+    std::vector<std::string> words;
+    while (words.empty() && std::getline(file, line))
+      words = wordsOf(line);
+    if (words.size() < needed)
+      return Status::failure("'" + fileName + "': record " + std::to_string(record + 1) +
+        " of the " + std::to_string(count) + " its header announces is " +
+        (words.empty() ? "missing" : "incomplete"));
+  }
+  return Status::success();
+}
+
+// The .node, .ele and (when there) .face files under `base`, checked before TetGen reads them.
+Status checkTetGenFiles(const std::string& base, bool withFaces)
+{
+  const auto headerNumber =
+    [](const std::vector<std::string>& header, std::size_t index, long long fallback)
+  {
+    return header.size() > index ? std::stoll(header[index]) : fallback;
+  };
+  Status status = checkRecords(base + ".node",
+    [&](const std::vector<std::string>& header) -> std::size_t
+    {
+      // index, dimension coordinates, attributes, a marker when flagged
+      const long long dimension = headerNumber(header, 1, 3);
+      const long long attributes = headerNumber(header, 2, 0);
+      const long long markers = headerNumber(header, 3, 0);
+      if (dimension != 3 || attributes < 0 || markers < 0 || markers > 1)
+        return 0;
+      return static_cast<std::size_t>(1 + dimension + attributes + markers);
+    });
+  if (status.ok())
+    status = checkRecords(base + ".ele",
+      [&](const std::vector<std::string>& header) -> std::size_t
+      {
+        const long long corners = headerNumber(header, 1, 4);
+        const long long attributes = headerNumber(header, 2, 0);
+        if ((corners != 4 && corners != 10) || attributes < 0)
+          return 0;
+        return static_cast<std::size_t>(1 + corners + attributes);
+      });
+  if (status.ok() && withFaces)
+    status = checkRecords(base + ".face",
+      [&](const std::vector<std::string>& header) -> std::size_t
+      {
+        const long long markers = headerNumber(header, 1, 0);
+        return markers < 0 || markers > 1 ? 0 : static_cast<std::size_t>(4 + markers);
+      });
+  return status;
+}
+
 } // namespace
 
 bool isTetGenFileName(const std::string& fileName)
@@ -60,18 +152,30 @@ Status readTetGenFiles(const std::string& fileName, vtkUnstructuredGrid* grid)
         "': no such file (TetGen meshes are read "
         "from the .node and .ele files together)");
   }
+  std::error_code error;
+  const bool withFaces = std::filesystem::is_regular_file(base + ".face", error);
+  const Status layout = checkTetGenFiles(base, withFaces);
+  if (!layout.ok())
+    return layout;
   tetgenio io;
   std::vector<char> name = cString(base);
   bool loaded = false;
+  try
   {
     const QuietStream quiet(stdout, STDOUT_FILENO);
     loaded = io.load_node(name.data()) && io.load_tet(name.data());
-    std::error_code error;
-    if (loaded && std::filesystem::is_regular_file(base + ".face", error))
+    if (loaded && withFaces)
       loaded = io.load_face(name.data());
   }
+  catch (int)
+  {
+    // TetGen's reader throws its error code (an index out of range, a bad number).
+    loaded = false;
+  }
   if (!loaded)
-    return Status::failure("'" + fileName + "': TetGen cannot read the .node, .ele or .face file");
+    return Status::failure("'" + fileName +
+      "': TetGen cannot read the .node, .ele or .face file (a node index out of range, or a "
+      "value that is not a number?)");
   if (io.numberofcorners != 4)
     return Status::failure("'" + fileName + "' holds tetrahedra with " +
       std::to_string(io.numberofcorners) + " nodes; cgmesh refines linear tetrahedra");

@@ -280,6 +280,30 @@ def test_tetgen_files(cgmesh, tetgen, scratch):
     result = subprocess.run([tetgen, "-rNEF", output[:-4]], capture_output=True, text=True)
     check(result.returncode == 0 and "Error" not in result.stdout,
           "TetGen does not read the output: " + result.stdout[-1500:])
+    # Malformed files: one line of error each (TetGen's own reader would crash on them).
+    nodes = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n"
+    bad_files = {
+        "empty": ("", "", "not a TetGen file"),
+        "garbage": (nodes, "tetrahedra follow\n", "not a TetGen file"),
+        "short": (nodes, "2 4 0\n1 1 2 3 4\n", "record 2 of the 2 its header announces is "
+                  "missing"),
+        "incomplete": (nodes, "1 4 0\n1 1 2 3\n", "record 1 of the 1 its header announces "
+                       "is incomplete"),
+        "out-of-range": (nodes, "1 4 0\n1 1 2 3 17\n", "TetGen cannot read"),
+        "not-a-number": (nodes.replace("5 1 1 1", "5 nan 1 1"), "1 4 0\n1 1 2 3 4\n",
+                         "TetGen cannot read"),
+    }
+    for description, (node_text, ele_text, expected) in bad_files.items():
+        base = os.path.join(scratch, "bad-" + description)
+        for extension, text in ((".node", node_text), (".ele", ele_text)):
+            with open(base + extension, "w") as handle:
+                handle.write(text)
+        bad_output = os.path.join(scratch, "bad-%s-refined.vtu" % description)
+        result = run(cgmesh, "refine", base + ".ele", bad_output)
+        check(result.returncode == 1 and expected in result.stderr and
+              not os.path.exists(bad_output),
+              "malformed TetGen files (%s): exit %d, %r" % (description, result.returncode,
+                                                          result.stderr))
 
 
 def make_input(gmsh, scratch):
