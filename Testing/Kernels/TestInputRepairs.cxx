@@ -73,6 +73,10 @@ void test_non_finite_coordinates_are_refused()
     const Status status = refineAndCheck(mesh, templateOptions(4), result);
     CHECK(!status.ok());
     CHECK(status.message().find("NaN or infinite") != std::string::npos);
+    // The mesh check (cgmesh check) calls such a mesh invalid too.
+    const MeshReport report = inspectMesh(mesh);
+    CHECK_EQUAL(report.nonFinitePoints, 1);
+    CHECK(!report.isValid());
   }
 }
 

@@ -109,6 +109,16 @@ void inspectPoints(const TetMesh& mesh, MeshReport& report)
     }
   }
   report.unusedPoints = std::count(used.begin(), used.end(), 0);
+  for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
+  {
+    const double* x = mesh.point(p);
+    report.nonFinitePoints +=
+      !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]));
+  }
+  if (report.nonFinitePoints > 0)
+  {
+    return; // coordinates that do not compare cannot be sorted to find duplicates
+  }
 
   std::vector<PointId> order(mesh.numberOfPoints());
   for (PointId i = 0; i < mesh.numberOfPoints(); ++i)
@@ -234,6 +244,7 @@ std::string MeshReport::describeProblems() const
   complain(this->misorientedFacePairs, "interior faces with inconsistent orientation");
   complain(this->unusedPoints, "unused points");
   complain(this->duplicatePoints, "duplicate points");
+  complain(this->nonFinitePoints, "points with a NaN or infinite coordinate");
   return problems.str();
 }
 

@@ -26,6 +26,7 @@ struct MeshReport
   std::int64_t regionInterfaceFaces = 0; // interior faces between different regions
   PointId unusedPoints = 0;
   PointId duplicatePoints = 0;   // points with bit-identical coordinates to another point
+  PointId nonFinitePoints = 0;   // points with a NaN or infinite coordinate
   CellId repeatedCornerTets = 0; // a tet that names one point twice
   double volume = 0;
   double boundaryArea = 0;
