@@ -238,7 +238,10 @@ Status checkWritableFileName(const std::string& fileName, const std::string& wha
   const std::filesystem::path directory = path.parent_path().empty() ? "." : path.parent_path();
   std::error_code error;
   if (!std::filesystem::is_directory(directory, error))
-    return Status::failure(cannot + "directory '" + directory.string() + "' does not exist");
+    return Status::failure(cannot +
+      (std::filesystem::exists(directory, error)
+          ? "'" + directory.string() + "' is not a directory"
+          : "directory '" + directory.string() + "' does not exist"));
   if (::access(directory.c_str(), W_OK | X_OK) != 0)
     return Status::failure(cannot + "directory '" + directory.string() + "' is not writable");
   if (std::filesystem::is_directory(path, error))

@@ -553,6 +553,11 @@ def test_stats_checked_first(cgmesh, scratch):
     expect_early_error(cgmesh, scratch, "tetgen stats in a missing directory",
                        ["tetgen", cube10, out, "--max-volume", "1e-5", "--stats", missing], out, 1,
                        "cannot write statistics file")
+    # A file where the directory should be is named as such.
+    not_a_directory = os.path.join(cube10, "out.vtu")
+    expect_early_error(cgmesh, scratch, "output under a file",
+                       ["refine", cube10, not_a_directory], not_a_directory, 1,
+                       "cannot write output file", "'%s' is not a directory" % cube10)
 
 
 def test_output_is_not_input(cgmesh, scratch):
