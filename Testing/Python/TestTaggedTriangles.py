@@ -306,6 +306,38 @@ def test_tetgen_files(cgmesh, tetgen, scratch):
                                                           result.stderr))
 
 
+def test_random_point_cloud_delaunay(cgmesh, tetgen, scratch):
+    """TetGen's tetrahedralisation of 2,000 random points (slivers up to its flat hull patches),
+    its hull faces tagged, refined by the Delaunay method: valid (no flat tet, which TetGen can
+    leave on four coplanar hull points when it meshes a partition anew), every tagged triangle
+    on the boundary, the same for 1 and 2 threads."""
+    points = numpy.random.default_rng(4).random((2000, 3))
+    base = os.path.join(scratch, "cloud")
+    with open(base + ".node", "w") as handle:
+        handle.write("%d 3 0 0\n" % len(points))
+        for index, point in enumerate(points):
+            handle.write("%d %.17g %.17g %.17g\n" % (index + 1, *point))
+    result = subprocess.run([tetgen, "-Q", base + ".node"], capture_output=True, text=True)
+    check(result.returncode == 0, "tetgen: " + result.stdout[-1500:])
+    if result.returncode != 0:
+        return
+    digests = set()
+    for threads in ("1", "2"):
+        output = os.path.join(scratch, "cloud-delaunay-%s.vtu" % threads)
+        result = run(cgmesh, "refine", base + ".1.ele", output, "--method", "delaunay",
+                     "--threads", threads)
+        check(result.returncode == 0, "random cloud, Delaunay: " + result.stderr)
+        if result.returncode != 0:
+            return
+        digests.add(digest(output))
+    checked = run(cgmesh, "check", output)
+    check(checked.returncode == 0 and checked.stdout.rstrip().endswith("valid"),
+          "random cloud, Delaunay: cgmesh check: " + checked.stdout[-800:])
+    check(triangles_are_kept_faces(meshio.read(output), "Tag") == 0,
+          "random cloud, Delaunay: tagged triangles inside the mesh")
+    check(len(digests) == 1, "random cloud, Delaunay: 1 and 2 threads wrote different files")
+
+
 def make_input(gmsh, scratch):
     """The Gmsh mesh as a Gmsh user converts it: tets and triangles with their physical tags."""
     geometry = os.path.join(scratch, "two-volumes.geo")
@@ -411,6 +443,7 @@ def main():
         test_errors(options.cgmesh, options.scratch, mesh)
         test_file_formats(options.cgmesh, options.gmsh, options.scratch, mesh)
         test_tetgen_files(options.cgmesh, options.tetgen, options.scratch)
+        test_random_point_cloud_delaunay(options.cgmesh, options.tetgen, options.scratch)
     if FAILURES:
         print("%d checks failed" % len(FAILURES), file=sys.stderr)
         return 1

@@ -401,6 +401,19 @@ std::string TetGenSession::validate(
     }
   }
   const double shortestAllowed = 1e-8 * std::sqrt(squaredDistance(low, high));
+  // Corners of kept faces (input points: TetGen numbers them as given): improvement never moves
+  // them, so a flat tet of four such corners would stay flat.
+  std::vector<char> onKeptFace(static_cast<std::size_t>(out.numberofpoints), 0);
+  for (const auto& face : this->KeptFaces)
+  {
+    for (int p : face)
+    {
+      if (p >= 0 && p < out.numberofpoints)
+      {
+        onKeptFace[static_cast<std::size_t>(p)] = 1;
+      }
+    }
+  }
   for (int t = 0; t < out.numberoftetrahedra; ++t)
   {
     const int* c = out.tetrahedronlist + 4 * t;
@@ -429,8 +442,13 @@ std::string TetGenSession::validate(
     // Flat within rounding, as the mesh checks count a degenerate tet. TetGen leaves such tets
     // among coplanar grid points; refinement's are mended by the improvement that follows, but
     // the sweep's boxes, meshed anew without their interior points, are improved only at former
-    // interface vertices.
-    if (this->DropsPoints && volume6 <= 1e-12 * longest * std::sqrt(longest))
+    // interface vertices, and a flat tet on four corners of kept faces (a flat patch of the
+    // boundary, its two triangles under the tet's other two: seen meshing a partition of a random
+    // point cloud's tetrahedralisation anew) is not improved at all.
+    const bool flat = volume6 <= 1e-12 * longest * std::sqrt(longest);
+    if (flat &&
+      (this->DropsPoints ||
+        std::all_of(c, c + 4, [&](int p) { return onKeptFace[static_cast<std::size_t>(p)]; })))
     {
       return "TetGen returned a flat tetrahedron";
     }
