@@ -442,9 +442,9 @@ std::string TetGenSession::validate(
     // Flat within rounding, as the mesh checks count a degenerate tet. TetGen leaves such tets
     // among coplanar grid points; refinement's are mended by the improvement that follows, but
     // the sweep's boxes, meshed anew without their interior points, are improved only at former
-    // interface vertices, and a flat tet on four corners of kept faces (a flat patch of the
-    // boundary, its two triangles under the tet's other two: seen meshing a partition of a random
-    // point cloud's tetrahedralisation anew) is not improved at all.
+    // interface vertices. Nor is a flat tet on four corners of kept faces, which improvement
+    // never moves: TetGen, meshing anew a partition of a random point cloud's tetrahedralisation,
+    // laid one on a flat patch of the hull, its outer faces the kept ones.
     const bool flat = volume6 <= 1e-12 * longest * std::sqrt(longest);
     if (flat &&
       (this->DropsPoints ||
