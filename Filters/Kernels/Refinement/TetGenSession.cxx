@@ -402,18 +402,28 @@ std::string TetGenSession::validate(
   }
   const double shortestAllowed = 1e-8 * std::sqrt(squaredDistance(low, high));
   // Corners of kept faces (input points: TetGen numbers them as given): improvement never moves
-  // them, so a flat tet of four such corners would stay flat.
-  std::vector<char> onKeptFace(static_cast<std::size_t>(out.numberofpoints), 0);
-  for (const auto& face : this->KeptFaces)
+  // them, so a flat tet of four such corners would stay flat. Flagged only once a flat tet needs
+  // them, which few calls return.
+  std::vector<char> onKeptFace;
+  const auto allOnKeptFaces = [&](const int* corners)
   {
-    for (int p : face)
+    if (onKeptFace.empty())
     {
-      if (p >= 0 && p < out.numberofpoints)
+      onKeptFace.assign(static_cast<std::size_t>(out.numberofpoints), 0);
+      for (const auto& face : this->KeptFaces)
       {
-        onKeptFace[static_cast<std::size_t>(p)] = 1;
+        for (int p : face)
+        {
+          if (p >= 0 && p < out.numberofpoints)
+          {
+            onKeptFace[static_cast<std::size_t>(p)] = 1;
+          }
+        }
       }
     }
-  }
+    return std::all_of(
+      corners, corners + 4, [&](int p) { return onKeptFace[static_cast<std::size_t>(p)] != 0; });
+  };
   for (int t = 0; t < out.numberoftetrahedra; ++t)
   {
     const int* c = out.tetrahedronlist + 4 * t;
@@ -446,9 +456,7 @@ std::string TetGenSession::validate(
     // never moves: TetGen, meshing anew a partition of a random point cloud's tetrahedralisation,
     // laid one on a flat patch of the hull, its outer faces the kept ones.
     const bool flat = volume6 <= 1e-12 * longest * std::sqrt(longest);
-    if (flat &&
-      (this->DropsPoints ||
-        std::all_of(c, c + 4, [&](int p) { return onKeptFace[static_cast<std::size_t>(p)]; })))
+    if (flat && (this->DropsPoints || allOnKeptFaces(c)))
     {
       return "TetGen returned a flat tetrahedron";
     }

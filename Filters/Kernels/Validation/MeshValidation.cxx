@@ -112,8 +112,7 @@ void inspectPoints(const TetMesh& mesh, MeshReport& report)
   for (PointId p = 0; p < mesh.numberOfPoints(); ++p)
   {
     const double* x = mesh.point(p);
-    report.nonFinitePoints +=
-      !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]));
+    report.nonFinitePoints += !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]));
   }
   if (report.nonFinitePoints > 0)
   {
