@@ -355,7 +355,7 @@ const char* costOfKeptSlivers(RefinementMethod method)
     return "templates cut each sliver into slivers";
   }
   // Measured on the benchmarks' sliver-laden block and fin (26,269 tets, V = 0.64 x the mean
-  // volume, 2 threads): 90 s and 2 fallbacks as given, 1.6 s meshed anew first.
+  // volume, 2 threads): 68 s and 4 fallbacks as given, 1.6 s meshed anew first.
   return "TetGen refines each sliver-laden partition against the slivers' faces on its boundary, "
          "which can take it far longer than meshing the input anew and fail (the partition is "
          "then refined by templates)";

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <functional>
 #include <malloc.h>
 #include <new>
@@ -41,8 +42,27 @@ enum RequestKind : std::int32_t
   RunTetGen = 1,
   DieAfterReading = 2, // the test hooks: die as an abort inside TetGen would,
   PartitionGraph = 3,
-  StallAfterReading = 4 // or hang as a looping call would
+  StallAfterReading = 4, // or hang without computing,
+  SpinAfterReading = 5   // or compute for ever, as a looping call would
 };
+
+// A call that waits this many times its limit on the clock ends even when its worker, not
+// computing (blocked, or starved of the processor by other processes), is far from its limit
+// in processor time.
+constexpr int WallClockLimitFactor = 10;
+
+// The processor seconds `process` has used, or a negative number when they cannot be read.
+double processorSecondsOf(pid_t process)
+{
+  clockid_t clock;
+  timespec used;
+  if (process <= 0 || ::clock_getcpuclockid(process, &clock) != 0 ||
+    ::clock_gettime(clock, &used) != 0)
+  {
+    return -1;
+  }
+  return static_cast<double>(used.tv_sec) + 1e-9 * static_cast<double>(used.tv_nsec);
+}
 
 // Reads TetGen's switches and mesh, runs TetGen and answers. False when the exchange broke.
 bool serveTetGen(int socket, RequestKind kind)
@@ -61,6 +81,10 @@ bool serveTetGen(int socket, RequestKind kind)
   while (kind == StallAfterReading)
   {
     ::pause(); // until the host kills this worker
+  }
+  for (volatile std::uint64_t turns = 0; kind == SpinAfterReading;)
+  {
+    turns = turns + 1; // until the host kills this worker
   }
   std::string failure;
   try
@@ -221,7 +245,11 @@ double tetgenTimeLimitSeconds(const tetgenio& in, const std::string& switches)
   {
     return 30.0 + 0.002 * tets;
   }
-  return std::max(10.0, 2.5e-4 * forecastRefinedTets(in, volumeBound));
+  // 50 us per forecast output tet, ten times the most a call took on the Big cube, the FinFET,
+  // the sliver-laden benchmark input, a 1000:1:1 bar and TetGen's tetrahedralisation of 4,000
+  // random points (4.8 us, 2 cores of a VM): a looping call (that last input had one) costs the
+  // whole limit, which was five times this.
+  return std::max(2.0, 5e-5 * forecastRefinedTets(in, volumeBound));
 }
 
 WorkerPool::WorkerPool(int workers)
@@ -231,6 +259,10 @@ WorkerPool::WorkerPool(int workers)
 {
   const std::vector<int> stalling = numbersListedIn(StallWorkerVariable);
   this->StallWorker = stalling.empty() ? -1 : stalling.front();
+  const std::vector<int> spinning = numbersListedIn(SpinWorkerVariable);
+  this->SpinWorker = spinning.empty() ? -1 : spinning.front();
+  const std::vector<int> seconds = numbersListedIn(TimeLimitVariable);
+  this->TimeLimitSeconds = seconds.empty() ? 0 : seconds.front();
   for (Worker& worker : this->Workers)
   {
     this->start(worker);
@@ -285,7 +317,8 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
   {
     return "could not start a worker process for " + program;
   }
-  // The limit applies to each receive.
+  // The limit applies to each receive; an abortable call's wait for its reply counts the
+  // worker's processor time instead (below), with this as the limit on the rest of the reply.
   timeval limit;
   limit.tv_sec = seconds;
   limit.tv_usec = 0;
@@ -295,9 +328,15 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
   // EAGAIN from an earlier call on this thread does not pass a dead worker off as a timeout.
   errno = 0;
   bool exchanged = request(worker.socket);
-  if (exchanged && watched)
+  bool processorTimeLimit = false;
+  if (exchanged && abortable)
   {
-    // The reply's first bytes are waited for in slices, the run asked between them.
+    // The reply's first bytes are waited for in slices, the run asked between them. The limit
+    // counts the processor time the worker spends on the call, which the machine's load and the
+    // run's thread count barely change, where seconds on the clock stretch with both: whether a
+    // slow call is stopped, and its partition meshed anew or refined by templates, decides the
+    // output. A worker that hangs without computing ends at WallClockLimitFactor times the limit.
+    const double processorStart = processorSecondsOf(worker.process);
     const auto start = std::chrono::steady_clock::now();
     for (;;)
     {
@@ -306,12 +345,17 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
       {
         break; // readable, closed, or an error: the receive below tells which
       }
-      if (!this->KeepGoing())
+      if (watched && !this->KeepGoing())
       {
         this->stop(worker, true);
         return WorkerCallAbortedReason;
       }
-      if (std::chrono::steady_clock::now() - start > std::chrono::seconds(seconds))
+      const double processorUsed = processorSecondsOf(worker.process) - processorStart;
+      const bool counted = processorStart >= 0 && processorUsed >= 0;
+      processorTimeLimit = counted && processorUsed > static_cast<double>(seconds);
+      const auto wallLimit =
+        std::chrono::seconds(counted ? WallClockLimitFactor * seconds : seconds);
+      if (processorTimeLimit || std::chrono::steady_clock::now() - start > wallLimit)
       {
         errno = EAGAIN; // as the receive's own limit reports it
         exchanged = false;
@@ -340,8 +384,8 @@ std::string WorkerPool::exchange(int index, time_t seconds, const std::string& p
   const int status = this->stop(worker, true);
   if (timedOut)
   {
-    return program + " took longer than " + std::to_string(seconds) + " s on this " + piece +
-      " and was stopped";
+    return program + " took longer than " + std::to_string(seconds) + " s" +
+      (processorTimeLimit ? " of processor time" : "") + " on this " + piece + " and was stopped";
   }
   return "the " + program + " process stopped unexpectedly (" +
     describeWorkerEnd(status, program, piece) + ")";
@@ -352,11 +396,18 @@ std::string WorkerPool::runTetGen(
 {
   const bool kill =
     std::binary_search(this->KillPartitions.begin(), this->KillPartitions.end(), partition);
-  const bool stall =
-    this->StallWorker >= 0 && this->slotOf(index) == static_cast<std::size_t>(this->StallWorker);
-  const std::int32_t kind = kill ? DieAfterReading : stall ? StallAfterReading : RunTetGen;
+  const auto hooked = [&](int worker)
+  {
+    return worker >= 0 && this->slotOf(index) == static_cast<std::size_t>(worker);
+  };
+  const std::int32_t kind = kill ? DieAfterReading
+    : hooked(this->StallWorker)  ? StallAfterReading
+    : hooked(this->SpinWorker)   ? SpinAfterReading
+                                 : RunTetGen;
+  const double seconds =
+    this->TimeLimitSeconds > 0 ? this->TimeLimitSeconds : tetgenTimeLimitSeconds(in, switches);
   return this->exchange(
-    index, static_cast<time_t>(tetgenTimeLimitSeconds(in, switches)), "TetGen", "partition", true,
+    index, static_cast<time_t>(seconds), "TetGen", "partition", true,
     [&](int socket)
     {
       return sendAll(socket, &kind, sizeof(kind)) &&

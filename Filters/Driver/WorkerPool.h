@@ -30,10 +30,10 @@ class tetgenio;
 namespace cgmesh
 {
 
-// How long a TetGen call with `switches` on `in` may run before it counts as looping. With a
-// volume bound (a) on given tets, about 100 times what its output should take (TetGen makes
-// about half a million tets a second; the output is forecast as the tets given plus four per
-// volume bound of their volume), at least 10 s; otherwise 30 s plus 2 ms per tet given.
+// How many seconds of processor time a TetGen call with `switches` on `in` may take before it
+// counts as looping. With a volume bound (a) on given tets, 50 us per forecast output tet (the
+// tets given plus four per volume bound of their volume), about 20 times what a call takes at
+// half a million tets a second, at least 2 s; otherwise 30 s plus 2 ms per tet given.
 double tetgenTimeLimitSeconds(const tetgenio& in, const std::string& switches);
 
 class WorkerPool
@@ -69,9 +69,14 @@ public:
   // once it has read the request, as a failed assertion inside TetGen ends it; the host sees a
   // dead worker, the call fails and the worker is replaced. CGMESH_TEST_STALL_TETGEN_WORKER, a
   // worker index: that worker (the one thread i calls) hangs on every TetGen call instead, as a
-  // looping call would, until the call's time limit or an abort ends it.
+  // looping call would, until an abort ends it (or ten times the call's time limit: a worker that
+  // hangs uses no processor time). CGMESH_TEST_SPIN_TETGEN_WORKER, a worker index: that worker
+  // computes for ever instead, until the call's limit on its processor time or an abort ends it.
+  // CGMESH_TEST_TETGEN_SECONDS, a whole number of seconds: every TetGen call's time limit.
   static constexpr const char* KillPartitionsVariable = "CGMESH_TEST_KILL_TETGEN_PARTITIONS";
   static constexpr const char* StallWorkerVariable = "CGMESH_TEST_STALL_TETGEN_WORKER";
+  static constexpr const char* SpinWorkerVariable = "CGMESH_TEST_SPIN_TETGEN_WORKER";
+  static constexpr const char* TimeLimitVariable = "CGMESH_TEST_TETGEN_SECONDS";
 
 private:
   struct Worker
@@ -90,7 +95,8 @@ private:
   // what follows a success flag; a failure flag is followed by a message, returned. A worker that
   // breaks the exchange, dies, or sends nothing for `seconds` is replaced; the message names the
   // `program` it ran and the `piece` of work it had.
-  // `abortable`: the waits for the turn and for the reply ask KeepGoing (see setAbortCheck).
+  // `abortable`: the waits for the turn and for the reply ask KeepGoing (see setAbortCheck),
+  // and `seconds` limits the worker's processor time on the call, not the clock's.
   std::string exchange(int index, time_t seconds, const std::string& program,
     const std::string& piece, bool abortable, const std::function<bool(int)>& request,
     const std::function<bool(int)>& readResult);
@@ -100,6 +106,8 @@ private:
   WorkerSpawner Spawner; // destroyed before Workers: it kills and reaps what is left of them
   std::vector<int> KillPartitions; // sorted; see KillPartitionsVariable
   int StallWorker = -1;            // see StallWorkerVariable
+  int SpinWorker = -1;             // see SpinWorkerVariable
+  int TimeLimitSeconds = 0;        // see TimeLimitVariable; 0: tetgenTimeLimitSeconds()
   std::function<bool()> KeepGoing;
 };
 

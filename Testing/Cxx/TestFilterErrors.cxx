@@ -394,7 +394,7 @@ void test_abortDuringTetGenCall()
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - abort->Start).count();
   unsetenv("CGMESH_TEST_STALL_TETGEN_WORKER");
-  // Without the progress reported again, the call would run to its time limit (at least 10 s)
+  // Without the progress reported again, the call would run to its time limit (at least 20 s)
   // and the partitions fall back to templates.
   CGMESH_CHECK(seconds < 8.0, "the abort took " << seconds << " s");
   CGMESH_CHECK(run.Messages->Errors == 0, "an abort is not an error");

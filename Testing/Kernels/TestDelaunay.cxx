@@ -271,7 +271,8 @@ void test_worker_deaths_fall_back_like_failures()
 }
 
 // An abort while TetGen calls run (here: a worker that hangs on every call, the pool's test hook)
-// ends the run at once, not when the calls' time limit (at least 10 s) would: the hung worker is
+// ends the run at once, not when the calls' time limit would (a worker that hangs uses no
+// processor time: ten times the limit on the clock, at least 20 s): the hung worker is
 // killed, its partitions counted as no failure, and the front end's hook is only ever called on
 // the thread that started the run. At one thread that thread's own call hangs; at two, the other
 // thread's, while the calling thread has done its share and waits; at four on a machine of fewer
@@ -305,6 +306,45 @@ void test_abort_cuts_tetgen_calls_short()
               << " s\n";
   }
   CHECK(unsetenv(WorkerPool::StallWorkerVariable) == 0);
+}
+
+// The time limit counts the processor time a worker spends on the call, not the time on the
+// clock, which the machine's load stretches (the pool's test hooks set every call's limit to 1 s).
+// A worker that computes on is stopped once it has used its second: both partitions fall back,
+// and the warnings say which time was counted. A worker that hangs without computing is not
+// stopped at one second on the clock: the run goes on until its abort, two seconds later.
+void test_time_limit_counts_processor_time()
+{
+  const TetMesh input = threeRegionCube(4);
+  CHECK(setenv(WorkerPool::TimeLimitVariable, "1", 1) == 0);
+  CHECK(setenv(WorkerPool::SpinWorkerVariable, "0", 1) == 0);
+  AdaptationOptions options = delaunayOptions(1, 1);
+  options.numberOfPartitions = 2;
+  const AdaptationResult result = run(input, options);
+  CHECK(unsetenv(WorkerPool::SpinWorkerVariable) == 0);
+  cgmesh_test::checkValidAndConserving(input, result.mesh);
+  CHECK_EQUAL(result.summary.delaunayFallbacks, std::int64_t(2));
+  CHECK_EQUAL(result.summary.warnings.size(), std::size_t(2));
+  for (const AdaptationWarning& warning : result.summary.warnings)
+  {
+    CHECK(warning.text.find(
+            "TetGen took longer than 1 s of processor time on this partition and was stopped") !=
+      std::string::npos);
+  }
+
+  CHECK(setenv(WorkerPool::StallWorkerVariable, "0", 1) == 0);
+  const auto start = std::chrono::steady_clock::now();
+  options.abortRequested = [&]
+  {
+    return std::chrono::steady_clock::now() - start > std::chrono::seconds(3);
+  };
+  AdaptationResult stalled;
+  CHECK(adaptMesh(input, options, stalled).ok());
+  CHECK(stalled.summary.aborted);
+  CHECK_EQUAL(stalled.summary.delaunayFallbacks, std::int64_t(0));
+  CHECK(stalled.summary.warnings.empty());
+  CHECK(unsetenv(WorkerPool::StallWorkerVariable) == 0);
+  CHECK(unsetenv(WorkerPool::TimeLimitVariable) == 0);
 }
 
 void test_bad_delaunay_options_are_refused()
@@ -501,9 +541,6 @@ void test_tampered_tetgen_output_is_refused()
 
 } // namespace
 
-// The time a TetGen call may take: with a volume bound on given tets, about 100 times what its
-// forecast output takes and at least 10 s; without one (or with sizes per point), 30 s plus 2 ms a
-// tet, and for a remeshed partition (no tets) six tets a point.
 // A new tet's parent is an old tet that holds its centroid, wherever the walk to it starts. The
 // first attribute TetGen hands back (the old tet a new one descends from) says where walks start:
 // replaced by unrelated old tets, it leaves every parent that holds its centroid strictly inside
@@ -626,6 +663,9 @@ void test_parents_by_descent_without_cell_data()
   CHECK(cgmesh_test::identicalResults(descended, run(input, options)));
 }
 
+// The processor time a TetGen call may take: with a volume bound on given tets, about 20 times
+// what its forecast output takes and at least 2 s; without one (or with sizes per point), 30 s
+// plus 2 ms a tet, and for a remeshed partition (no tets) six tets a point.
 void test_tetgen_time_limit_follows_the_forecast_output()
 {
   tetgenio in;
@@ -635,8 +675,8 @@ void test_tetgen_time_limit_follows_the_forecast_output()
   in.numberofcorners = 4;
   in.tetrahedronlist = new int[4]{ 0, 1, 2, 3 };
   in.firstnumber = 0;
-  CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq2a0.001"), 10.0, 1e-12);
-  CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq2a1e-7"), 2.5e-4 * (1 + 4.0 / 6.0 / 1e-7), 1e-6);
+  CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq2a0.001"), 2.0, 1e-12);
+  CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq2a1e-7"), 5e-5 * (1 + 4.0 / 6.0 / 1e-7), 1e-6);
   CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq2"), 30.002, 1e-12);
   CHECK_CLOSE(tetgenTimeLimitSeconds(in, "rYMQnq1000a1e-7m"), 30.002, 1e-12);
   in.numberoftetrahedra = 0;
@@ -651,6 +691,7 @@ int main()
   test_failed_partitions_fall_back_to_templates();
   test_worker_deaths_fall_back_like_failures();
   test_abort_cuts_tetgen_calls_short();
+  test_time_limit_counts_processor_time();
   test_bad_delaunay_options_are_refused();
   test_tampered_tetgen_output_is_refused();
   test_parents_hold_the_centroids_wherever_walks_start();
