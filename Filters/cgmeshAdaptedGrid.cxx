@@ -43,9 +43,10 @@ void fillAdaptedGrid(const AdaptedGridInput& input, AdaptationResult& result,
   vtkUnstructuredGrid* output, ResultArrays handling)
 {
   const ParallelFor parallelFor = parallelForOn(result.summary.plan.threads);
-  const std::vector<TriangleChild> children = input.triangles
-    ? findTriangleChildren(*input.mesh, input.triangles->triangles, result.mesh, result.provenance)
-    : std::vector<TriangleChild>();
+  const std::vector<TriangleChild> children = !input.triangles ? std::vector<TriangleChild>()
+    : result.summary.boundaryRetriangulated
+    ? findTriangleChildrenByPosition(*input.mesh, input.triangles->triangles, result.mesh)
+    : findTriangleChildren(*input.mesh, input.triangles->triangles, result.mesh, result.provenance);
   if (handling == ResultArrays::HandOver)
   {
     convertToUnstructuredGrid(std::move(result.mesh), output, std::string(), parallelFor);

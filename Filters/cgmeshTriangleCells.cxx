@@ -6,13 +6,17 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkVariant.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <map>
 #include <string>
 
 namespace cgmesh
@@ -31,6 +35,65 @@ std::string describeTriangle(const TriangleCells& cells, std::size_t index)
 }
 
 } // namespace
+
+std::vector<std::pair<Face, int>> surfaceClassesOf(
+  vtkUnstructuredGrid* grid, const TriangleCells& cells)
+{
+  // Each triangle's values in every cell array, as bytes: equal bytes, one class.
+  vtkCellData* cellData = grid->GetCellData();
+  std::map<std::string, int> classOfValues;
+  std::vector<std::pair<Face, int>> entries;
+  entries.reserve(cells.triangles.size());
+  for (std::size_t t = 0; t < cells.triangles.size(); ++t)
+  {
+    const vtkIdType cellId = cells.triangleCellIds[t];
+    std::string values;
+    for (int a = 0; a < cellData->GetNumberOfArrays(); ++a)
+    {
+      vtkAbstractArray* array = cellData->GetAbstractArray(a);
+      const int components = array->GetNumberOfComponents();
+      vtkDataArray* numbers = vtkDataArray::SafeDownCast(array);
+      for (int c = 0; c < components; ++c)
+      {
+        if (numbers)
+        {
+          const double value = numbers->GetComponent(cellId, c);
+          values.append(reinterpret_cast<const char*>(&value), sizeof(value));
+        }
+        else
+        {
+          values += array->GetVariantValue(cellId * components + c).ToString();
+          values.push_back('\0');
+        }
+      }
+    }
+    auto known = classOfValues.find(values); // a few classes, looked up for every triangle
+    if (known == classOfValues.end())
+    {
+      known =
+        classOfValues.emplace(std::move(values), static_cast<int>(classOfValues.size())).first;
+    }
+    Face corners = cells.triangles[t];
+    std::sort(corners.begin(), corners.end());
+    entries.emplace_back(corners, known->second);
+  }
+  std::sort(entries.begin(), entries.end());
+  // One entry per face: a face in two classes (in two tag sets) merges with neither.
+  int nextClass = static_cast<int>(classOfValues.size());
+  std::vector<std::pair<Face, int>> classes;
+  for (std::size_t first = 0; first < entries.size();)
+  {
+    std::size_t last = first + 1;
+    while (last < entries.size() && entries[last].first == entries[first].first)
+    {
+      ++last;
+    }
+    const bool mixed = entries[last - 1].second != entries[first].second;
+    classes.emplace_back(entries[first].first, mixed ? nextClass++ : entries[first].second);
+    first = last;
+  }
+  return classes;
+}
 
 bool hasTriangles(vtkUnstructuredGrid* grid)
 {

@@ -7,9 +7,11 @@
 #include "cgmeshFiltersModule.h" // for export macro
 #include "vtkType.h"             // for vtkIdType
 
+#include "Core/FaceKey.h"
 #include "Core/Status.h"
 #include "Merge/TaggedTriangles.h"
 
+#include <utility>
 #include <vector>
 
 class vtkUnstructuredGrid;
@@ -37,6 +39,12 @@ CGMESHFILTERS_EXPORT void separateTriangles(
 // triangle is a face of a tet of `mesh` (the tets of `cells`) on the boundary or between two
 // regions: a face inside one region is not kept by refinement, so its tag could not be.
 CGMESHFILTERS_EXPORT Status checkTriangleCells(const TetMesh& mesh, const TriangleCells& cells);
+
+// The triangles' surface classes, as AdaptationOptions::surfaceClasses takes them: triangles with
+// equal values in every cell array of `grid` share a class; a face listed twice with different
+// values gets a class of its own.
+CGMESHFILTERS_EXPORT std::vector<std::pair<Face, int>> surfaceClassesOf(
+  vtkUnstructuredGrid* grid, const TriangleCells& cells);
 
 // Appends `children` to `grid` as VTK_TRIANGLE cells (after its tetrahedra).
 CGMESHFILTERS_EXPORT void appendTriangles(

@@ -75,12 +75,18 @@ bool hasCellArraysBesides(vtkUnstructuredGrid* input, const std::string& regionA
 // The filter's parameters, with the progress and abort hooks of this run. Provenance is needed to
 // interpolate point data and to find the children of triangles.
 cgmesh::AdaptationOptions makeOptions(vtkCoarseGrainedMeshAdaptation* filter,
-  const cgmesh::AdaptationOptions& parameters, vtkUnstructuredGrid* input, bool withTriangles)
+  const cgmesh::AdaptationOptions& parameters, vtkUnstructuredGrid* input,
+  const cgmesh::TriangleCells* triangles)
 {
   cgmesh::AdaptationOptions options = parameters;
-  options.pointProvenance = input->GetPointData()->GetNumberOfArrays() > 0 || withTriangles;
-  options.cellDataByParent = withTriangles || hasCellArraysBesides(input, options.regionArrayName);
-  options.keepBoundaryTriangulation = withTriangles;
+  options.pointProvenance = input->GetPointData()->GetNumberOfArrays() > 0 || triangles;
+  options.cellDataByParent = triangles || hasCellArraysBesides(input, options.regionArrayName);
+  // A sliver-laden input may be meshed anew with its tagged triangles split and merged within
+  // their surface classes; their children are then found by position (fillAdaptedGrid).
+  if (triangles)
+  {
+    options.surfaceClasses = cgmesh::surfaceClassesOf(input, *triangles);
+  }
   // The driver calls both hooks on the calling thread only.
   options.progress = [filter](double fraction, const char*)
   {
@@ -640,8 +646,8 @@ int vtkCoarseGrainedMeshAdaptation::RequestData(vtkInformation* vtkNotUsed(reque
   }
   this->Internals->LastInputSeconds = stopwatch.seconds();
 
-  cgmesh::AdaptationOptions options =
-    makeOptions(this, this->Internals->Parameters, run.input, run.withTriangles);
+  cgmesh::AdaptationOptions options = makeOptions(
+    this, this->Internals->Parameters, run.input, run.withTriangles ? &run.triangles : nullptr);
   if (this->RefinementBoxEnabled)
   {
     // The same on every process: no exchange needed.

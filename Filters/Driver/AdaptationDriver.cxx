@@ -342,7 +342,7 @@ std::string whySliversAreKept(const AdaptationOptions& options, const Adaptation
   }
   if (options.keepBoundaryTriangulation)
   {
-    return "tagged triangles or pieces across processes keep the boundary's triangles";
+    return "the pieces of a mesh across processes keep their boundary's triangles";
   }
   return std::string();
 }

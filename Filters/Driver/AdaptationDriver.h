@@ -53,6 +53,9 @@ struct AdaptationSummary
   std::int64_t inputRemeshedBoxes = 0;
   std::int64_t inputDroppedPoints = 0; // interface-round points inside the clusters, dropped
   std::int64_t inputRemeshFailures = 0;
+  // The input was meshed anew as a whole with its tagged triangles free to split and merge
+  // (AdaptationOptions::surfaceClasses): their children are found by position.
+  bool boundaryRetriangulated = false;
   bool concurrentTetGen = false;    // TetGen calls overlapped (in worker processes)
   std::int64_t reorientedTets = 0;  // inverted input tets that were turned around
   std::int64_t gluedPoints = 0;     // copies of matching faces' corners merged into one point

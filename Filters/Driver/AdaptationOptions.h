@@ -9,10 +9,12 @@
 
 #include "Parameters.h"
 
+#include <array>
 #include <climits>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cgmesh
@@ -84,11 +86,18 @@ struct AdaptationOptions
   // Set when the mesh is one piece of a mesh spread over processes (the filter under MPI): face
   // diagonals then follow coordinates, which the processes sharing a face agree on, not ids.
   bool orderCornersByCoordinates = false;
-  // Set when the boundary's triangulation must stay as given up to refinement: triangles tagged
-  // on boundary faces follow those faces' children, and a piece of a mesh spread over processes
-  // shares its boundary faces with other pieces. Then a sliver-laden input is meshed anew around
-  // its slivers with its boundary faces kept, never as a whole with its boundary re-triangulated.
+  // Set when the boundary's triangulation must stay as given up to refinement: a piece of a mesh
+  // spread over processes shares its boundary faces with other pieces. Then a sliver-laden input
+  // is meshed anew around its slivers with its boundary faces kept, never as a whole with its
+  // boundary re-triangulated.
   bool keepBoundaryTriangulation = false;
+  // Triangles tagged on boundary and interface faces (the filter's triangle cells): each one's
+  // sorted corners with its surface class, equal for triangles of equal cell data, sorted by
+  // corners. A sliver-laden input is then meshed anew as a whole (with keepBoundaryTriangulation
+  // off), each class's faces free to split and to merge only with coplanar ones of their class;
+  // AdaptationSummary::boundaryRetriangulated then tells the caller to find the triangles'
+  // children by position (findTriangleChildrenByPosition).
+  std::vector<std::pair<std::array<std::int64_t, 3>, int>> surfaceClasses;
   // Whether the result needs point provenance (the weights that interpolate point data). Without
   // point data there is nothing to interpolate, and the merge skips locating moved points in the
   // input and expanding every new point's recipe.

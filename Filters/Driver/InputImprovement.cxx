@@ -45,6 +45,8 @@ Status remeshWholeInput(const ColorLoopSetup& setup, const AdaptationOptions& op
   sweep.numberOfIterations = 1;
   sweep.delaunay.shapesOnly = true;
   sweep.delaunay.keptFacesMaySplit = true;
+  sweep.delaunay.surfaceClasses =
+    options.surfaceClasses.empty() ? nullptr : &options.surfaceClasses;
   sweep.stage = Stage::ImproveInput;
   sweep.progressStart = 0;
   sweep.progressEnd = 0.6;
@@ -54,6 +56,7 @@ Status remeshWholeInput(const ColorLoopSetup& setup, const AdaptationOptions& op
   const std::int64_t before = summary.inputRemeshedBoxes;
   const Status status = runColorLoop(sweep, options, state, summary, reporter);
   remeshed = summary.inputRemeshedBoxes > before;
+  summary.boundaryRetriangulated = remeshed && !options.surfaceClasses.empty();
   return status;
 }
 

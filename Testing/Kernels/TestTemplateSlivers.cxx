@@ -199,7 +199,7 @@ void test_sliver_laden_input_with_a_size_field()
 }
 
 // Not where the tets must stay as given: outside a RefinementRegions selection, or with the
-// boundary triangulation kept (tagged triangles, pieces across processes). Those runs match the
+// boundary triangulation kept (pieces across processes). Those runs match the
 // runs that never improve the input first, and warn that the slivers were refined as given.
 void test_sliver_laden_input_kept_where_it_must_stay()
 {
@@ -216,7 +216,7 @@ void test_sliver_laden_input_kept_where_it_must_stay()
   options.keepBoundaryTriangulation = true;
   const AdaptationResult kept = run(input, options);
   CHECK_EQUAL(kept.summary.inputRemeshedBoxes, std::int64_t(0));
-  checkWarnsOfSliversKept(kept, "tagged triangles or pieces across processes");
+  checkWarnsOfSliversKept(kept, "pieces of a mesh across processes");
   cgmesh_test::checkValidAndConserving(input, kept.mesh);
 }
 

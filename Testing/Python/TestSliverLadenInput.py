@@ -2,8 +2,9 @@
 pseudo-random points and no quality bound (`tetgen -pAi`), read from its .node and .ele files.
 Template refinement meshes it anew first (the table's `input remeshed boxes`, the stats), keeps
 both regions' volumes (`cgmesh check`), gives the same file at 1 and 2 threads, and ends far better
-shaped than refining it as given. Refined as given (--no-improve-input), and with its facet
-markers kept as tagged triangles (the .face file beside it), it warns and says why."""
+shaped than refining it as given. Refined as given (--no-improve-input), it warns and says why.
+With its facet markers as tagged triangles (the .face file beside it), both methods mesh it anew
+too, and every marker's surface survives."""
 import argparse
 import json
 import os
@@ -12,6 +13,7 @@ import shutil
 import subprocess
 import sys
 
+import TestTaggedTriangles
 from TestCommandLine import digest, region_volumes, run
 from TestTaggedTriangles import TETGEN_POLY
 
@@ -40,11 +42,11 @@ def make_input(tetgen, scratch):
     return base + ".1" if result.returncode == 0 else None
 
 
-def refine(cgmesh, source, output, options):
+def refine(cgmesh, source, output, options, bound=("--edge-length-factor", "0.5")):
     """(stats, stdout, stderr) of a successful run, or None."""
     stats = output + ".json"
-    result = run(cgmesh, "refine", source, output, "--edge-length-factor", "0.5", "--partitions",
-                 "16", "--stats", stats, *options)
+    result = run(cgmesh, "refine", source, output, *bound, "--partitions", "16", "--stats", stats,
+                 *options)
     check(result.returncode == 0, "refine %s %s: %s" % (source, options, result.stderr))
     if result.returncode != 0:
         return None
@@ -96,14 +98,37 @@ def test_meshed_anew(cgmesh, scratch, tagged):
                                                               given["minDihedralAngleP1"]))
 
 
-def test_tagged_triangles_kept(cgmesh, scratch, tagged):
-    ran = refine(cgmesh, tagged + ".ele", os.path.join(scratch, "tagged.ele"), [])
-    if ran is None:
-        return
-    stats, table, warnings = ran
-    check(stats["inputRemeshedBoxes"] == 0, "tagged triangles, yet meshed anew")
-    check("sliver-laden-input-kept" in table and "tagged triangles" in warnings,
-          "tagged triangles: no warning, or not why: " + warnings)
+def test_tagged_triangles_meshed_anew(cgmesh, scratch, tagged):
+    """With its facet markers as tagged triangles, the input is meshed anew too: each marker's
+    faces split and merge only among themselves, and the children are found by position. Each
+    marker keeps its area and orientation, each region its volume, every triangle lies on the
+    boundary or the interface, the shapes are as good as without tags, and the files are the
+    same at 1 and 2 threads."""
+    before = TestTaggedTriangles.read_tetgen(tagged)
+    outputs = []
+    bounds = {"template": ("--edge-length-factor", "0.5"),
+              "delaunay": ("--method", "delaunay", "--volume-factor", "0.5")}
+    for method in ("template", "delaunay"):
+        for threads in ("1", "2"):
+            output = os.path.join(scratch, "tagged-%s-%s.ele" % (method, threads))
+            ran = refine(cgmesh, tagged + ".ele", output, ["--threads", threads], bounds[method])
+            if ran is None:
+                return
+            stats, table, warnings = ran
+            outputs.append(output)
+            check(stats["inputRemeshedBoxes"] == 1 and stats["inputRemeshFailures"] == 0,
+                  "tagged, %s: %s remeshed, %s failed" % (method, stats["inputRemeshedBoxes"],
+                                                          stats["inputRemeshFailures"]))
+            check("sliver-laden" not in warnings, "tagged, %s: warned %s" % (method, warnings))
+            quality = stats["quality"]["all"]
+            check(quality["minDihedralAngleP1"] > 10,
+                  "tagged, %s: min dihedral p1 %.2f degrees" % (method,
+                                                                quality["minDihedralAngleP1"]))
+        for extension in (".node", ".ele", ".face"):
+            check(digest(outputs[-2][:-4] + extension) == digest(outputs[-1][:-4] + extension),
+                  "tagged, %s: 1 and 2 threads give different %s files" % (method, extension))
+        TestTaggedTriangles.compare(before, TestTaggedTriangles.read_tetgen(outputs[-1][:-4]),
+                                    "tagged, meshed anew, " + method)
 
 
 def main():
@@ -117,9 +142,10 @@ def main():
     tagged = make_input(options.tetgen, options.scratch)
     if tagged is not None:
         test_meshed_anew(options.cgmesh, options.scratch, tagged)
-        test_tagged_triangles_kept(options.cgmesh, options.scratch, tagged)
-    if FAILURES:
-        print("%d checks failed" % len(FAILURES), file=sys.stderr)
+        test_tagged_triangles_meshed_anew(options.cgmesh, options.scratch, tagged)
+    failures = FAILURES + TestTaggedTriangles.FAILURES
+    if failures:
+        print("%d checks failed" % len(failures), file=sys.stderr)
         return 1
     print("all checks passed")
     return 0

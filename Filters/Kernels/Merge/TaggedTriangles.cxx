@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace cgmesh
 {
@@ -132,6 +133,173 @@ double dot(const std::array<double, 3>& u, const std::array<double, 3>& v)
   return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 }
 
+// The tagged triangles in a uniform grid over their bounding boxes, for finding the ones that
+// hold a point. Cells about as large as a triangle, at most GridCellsPerAxis per axis.
+class TriangleGrid
+{
+public:
+  TriangleGrid(const TetMesh& mesh, const std::vector<Triangle>& triangles)
+  {
+    double extent = 0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      this->Low[axis] = HUGE_VAL;
+      this->High[axis] = -HUGE_VAL;
+    }
+    for (const Triangle& triangle : triangles)
+    {
+      double low[3], high[3];
+      this->boundsOf(mesh, triangle, low, high);
+      double largest = 0;
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        this->Low[axis] = std::min(this->Low[axis], low[axis]);
+        this->High[axis] = std::max(this->High[axis], high[axis]);
+        largest = std::max(largest, high[axis] - low[axis]);
+      }
+      extent += largest;
+    }
+    double cell = triangles.empty() ? 1 : extent / static_cast<double>(triangles.size());
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      cell = std::max(cell, (this->High[axis] - this->Low[axis]) / GridCellsPerAxis);
+    }
+    this->Cell = cell > 0 ? cell : 1;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      this->Cells[axis] = std::max<std::int64_t>(
+        1, static_cast<std::int64_t>(std::ceil((this->High[axis] - this->Low[axis]) / this->Cell)));
+    }
+    // Counting sort of (cell, triangle) pairs into compressed rows.
+    std::vector<std::pair<std::int64_t, std::size_t>> pairs;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      double low[3], high[3];
+      this->boundsOf(mesh, triangles[t], low, high);
+      std::int64_t first[3], last[3];
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        first[axis] = this->cellAlong(axis, low[axis]);
+        last[axis] = this->cellAlong(axis, high[axis]);
+      }
+      for (std::int64_t i = first[0]; i <= last[0]; ++i)
+      {
+        for (std::int64_t j = first[1]; j <= last[1]; ++j)
+        {
+          for (std::int64_t k = first[2]; k <= last[2]; ++k)
+          {
+            pairs.emplace_back((i * this->Cells[1] + j) * this->Cells[2] + k, t);
+          }
+        }
+      }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    this->Start.assign(
+      static_cast<std::size_t>(this->Cells[0] * this->Cells[1] * this->Cells[2]) + 1, 0);
+    for (const auto& pair : pairs)
+    {
+      ++this->Start[static_cast<std::size_t>(pair.first) + 1];
+      this->Members.push_back(pair.second);
+    }
+    for (std::size_t c = 1; c < this->Start.size(); ++c)
+    {
+      this->Start[c] += this->Start[c - 1];
+    }
+  }
+
+  // Calls visit(t) for every triangle whose cell holds `point` (none outside the grid).
+  template <typename Visit>
+  void forEachNear(const double point[3], Visit&& visit) const
+  {
+    std::int64_t index = 0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double offset = (point[axis] - this->Low[axis]) / this->Cell;
+      if (!(offset >= -1e-9 * this->Cells[axis] && offset <= this->Cells[axis] * (1 + 1e-9)))
+      {
+        return;
+      }
+      index = index * this->Cells[axis] + this->cellAlong(axis, point[axis]);
+    }
+    for (std::size_t m = this->Start[static_cast<std::size_t>(index)];
+         m < this->Start[static_cast<std::size_t>(index) + 1]; ++m)
+    {
+      visit(this->Members[m]);
+    }
+  }
+
+private:
+  static constexpr double GridCellsPerAxis = 256;
+
+  static void boundsOf(const TetMesh& mesh, const Triangle& triangle, double low[3], double high[3])
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      low[axis] = HUGE_VAL;
+      high[axis] = -HUGE_VAL;
+      for (PointId p : triangle)
+      {
+        low[axis] = std::min(low[axis], mesh.point(p)[axis]);
+        high[axis] = std::max(high[axis], mesh.point(p)[axis]);
+      }
+    }
+  }
+
+  // The cell along `axis` of coordinate `x`, clamped to the grid; a triangle is entered in every
+  // cell its box touches, so a point on a cell's border finds it from either side.
+  std::int64_t cellAlong(int axis, double x) const
+  {
+    const auto cell = static_cast<std::int64_t>(std::floor((x - this->Low[axis]) / this->Cell));
+    return std::min(std::max<std::int64_t>(cell, 0), this->Cells[axis] - 1);
+  }
+
+  double Low[3], High[3];
+  double Cell = 1;
+  std::int64_t Cells[3] = { 1, 1, 1 };
+  std::vector<std::size_t> Start;   // per cell, its first entry in Members
+  std::vector<std::size_t> Members; // triangle indices, cell by cell
+};
+
+// Whether `point` lies in triangle (a, b, c) and `normal` is parallel to it, both within rounding
+// of coordinates as large as the triangle's edges.
+bool holds(const double* a, const double* b, const double* c, const double point[3],
+  const std::array<double, 3>& normal)
+{
+  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  const double w[3] = { point[0] - a[0], point[1] - a[1], point[2] - a[2] };
+  const std::array<double, 3> n = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+    u[0] * v[1] - u[1] * v[0] };
+  const double area2 = std::sqrt(dot(n, n));
+  const double longest = std::sqrt(
+    std::max({ u[0] * u[0] + u[1] * u[1] + u[2] * u[2], v[0] * v[0] + v[1] * v[1] + v[2] * v[2],
+      (c[0] - b[0]) * (c[0] - b[0]) + (c[1] - b[1]) * (c[1] - b[1]) +
+        (c[2] - b[2]) * (c[2] - b[2]) }));
+  const double normalLength = std::sqrt(dot(normal, normal));
+  if (!(area2 > 0) || !(normalLength > 0))
+  {
+    return false;
+  }
+  // Off the plane by at most a millionth of the longest edge, and facing the same line.
+  const std::array<double, 3> offset = { w[0], w[1], w[2] };
+  if (std::abs(dot(offset, n)) > 1e-6 * longest * area2 ||
+    std::abs(dot(normal, n)) < (1 - 1e-6) * normalLength * area2)
+  {
+    return false;
+  }
+  // Barycentric coordinates in the plane, from the sub-triangles' signed areas.
+  const auto signedArea = [&](const double* p, const double* q)
+  {
+    const double e[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+    const double f[3] = { point[0] - p[0], point[1] - p[1], point[2] - p[2] };
+    const std::array<double, 3> cross = { e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2],
+      e[0] * f[1] - e[1] * f[0] };
+    return dot(cross, n) / (area2 * area2);
+  };
+  const double slack = -1e-9;
+  return signedArea(a, b) >= slack && signedArea(b, c) >= slack && signedArea(c, a) >= slack;
+}
+
 } // namespace
 
 TaggedTriangleCheck checkTaggedTriangles(
@@ -229,6 +397,75 @@ std::vector<TriangleChild> findTriangleChildren(const TetMesh& input,
   std::sort(found.begin(), found.end());
   found.erase(std::unique(found.begin(), found.end()), found.end());
 
+  children.reserve(found.size());
+  for (const auto& entry : found)
+  {
+    TriangleChild child{ entry.first, entry.second };
+    if (dot(triangleNormal(output, child.corners), triangleNormal(input, triangles[child.parent])) <
+      0)
+    {
+      std::swap(child.corners[1], child.corners[2]);
+    }
+    children.push_back(child);
+  }
+  return children;
+}
+
+std::vector<TriangleChild> findTriangleChildrenByPosition(
+  const TetMesh& input, const std::vector<Triangle>& triangles, const TetMesh& output)
+{
+  std::vector<TriangleChild> children;
+  if (triangles.empty() || output.tets.empty())
+  {
+    return children;
+  }
+  const TriangleGrid grid(input, triangles);
+  const TriangleIndex index(triangles);
+  std::vector<std::pair<std::size_t, Face>> found; // (parent, sorted corners)
+  forEachDistinctFace(output.tets.front().data(), output.tets.size(),
+    [&](const Face& face, std::uint32_t first, std::uint32_t second, std::uint32_t count)
+    {
+      // Only faces refinement keeps as faces can carry a tag: the boundary and region interfaces.
+      if (count > 2 ||
+        (count == 2 && (!output.hasRegions() || output.regions[first] == output.regions[second])))
+      {
+        return;
+      }
+      double centroid[3] = { 0, 0, 0 };
+      for (PointId p : face)
+      {
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          centroid[axis] += output.point(p)[axis] / 3;
+        }
+      }
+      const std::array<double, 3> normal = triangleNormal(output, face);
+      std::size_t parent = triangles.size();
+      grid.forEachNear(centroid,
+        [&](std::size_t t)
+        {
+          const Triangle& corners = triangles[t];
+          if (t < parent &&
+            holds(input.point(corners[0]), input.point(corners[1]), input.point(corners[2]),
+              centroid, normal))
+          {
+            parent = t;
+          }
+        });
+      if (parent == triangles.size())
+      {
+        return;
+      }
+      // The parent, and any triangle listed at the same corners (one face in two tag sets).
+      Face corners = triangles[parent];
+      std::sort(corners.begin(), corners.end());
+      const auto range = index.find(corners);
+      for (std::size_t e = range.first; e < range.second; ++e)
+      {
+        found.emplace_back(index.entries[e].second, face);
+      }
+    });
+  std::sort(found.begin(), found.end());
   children.reserve(found.size());
   for (const auto& entry : found)
   {

@@ -51,6 +51,15 @@ struct TriangleChild
 std::vector<TriangleChild> findTriangleChildren(const TetMesh& input,
   const std::vector<Triangle>& triangles, const TetMesh& output, const PointProvenance& provenance);
 
+// The same found by position, for an output whose boundary was triangulated anew (a sliver-laden
+// input meshed anew with its tagged triangles free to split and to merge with coplanar ones of
+// the same cell data): a boundary or region-interface face of `output` is a child of the tagged
+// triangle that holds its centroid, in the triangle's plane and parallel to it (within rounding).
+// Where the centroid lies in several (on an edge two triangles share), the one listed first is
+// the parent, with any listed at the same corners. Sorted as findTriangleChildren's.
+std::vector<TriangleChild> findTriangleChildrenByPosition(
+  const TetMesh& input, const std::vector<Triangle>& triangles, const TetMesh& output);
+
 } // namespace cgmesh
 
 #endif

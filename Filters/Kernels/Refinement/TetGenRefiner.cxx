@@ -92,10 +92,28 @@ bool holdsManySlivers(const PartitionMesh& partition, const RefinementContext& c
 // faces cut into needles by the fin's footprint) kept 1.9 degrees that way and 6.4 merged, with
 // 64 partitions (serial TetGen: 4.7). A single marker is enough: where two kept faces meet with no
 // third at their edge, they lie in one region's boundary or one interface, as any other patch or
-// region brings a third face to that edge, which TetGen keeps as a segment.
-void mergeCoplanarFaces(tetgenio& in)
+// region brings a third face to that edge, which TetGen keeps as a segment. Tagged faces get a
+// marker per surface class (TetGen merges facets of equal markers only), so that a tag's border
+// stays a segment too. Facet f is kept face order.sourceOf(f).
+void mergeCoplanarFaces(tetgenio& in, const std::vector<Face>& keptFaces, const TetOrder& order,
+  const SurfaceClasses* classes)
 {
-  std::fill(in.facetmarkerlist, in.facetmarkerlist + in.numberoffacets, 1);
+  for (int f = 0; f < in.numberoffacets; ++f)
+  {
+    int marker = 1;
+    if (classes)
+    {
+      Face key = keptFaces[order.sourceOf(static_cast<std::size_t>(f))];
+      std::sort(key.begin(), key.end());
+      const auto found = std::lower_bound(classes->begin(), classes->end(), key,
+        [](const std::pair<Face, int>& entry, const Face& face) { return entry.first < face; });
+      if (found != classes->end() && found->first == key)
+      {
+        marker = found->second + 2;
+      }
+    }
+    in.facetmarkerlist[f] = marker;
+  }
 }
 
 // One TetGen call of a partition: the order the tets (or when remeshing, the kept faces) are
@@ -130,7 +148,7 @@ std::string runAttempts(const std::vector<TetGenAttempt>& attempts, PartitionMes
     const bool remesh = attempt.input != TetGenInput::Tets;
     if (remesh && parameters.keptFacesMaySplit)
     {
-      mergeCoplanarFaces(in);
+      mergeCoplanarFaces(in, keptFaces, attempt.order, parameters.surfaceClasses);
     }
     const bool sizeField = context.sizes != nullptr && !parameters.shapesOnly;
     std::string switches = tetgenSwitches(parameters, attempt.qualityBound, sizeField, remesh);

@@ -9,6 +9,7 @@
 #ifndef cgmesh_TetGenRefiner_h
 #define cgmesh_TetGenRefiner_h
 
+#include "Core/FaceKey.h"
 #include "Refinement/PartitionRefiner.h"
 
 #include <functional>
@@ -18,6 +19,10 @@ class tetgenio;
 
 namespace cgmesh
 {
+
+// Surface classes of kept faces: (sorted corners, class) pairs sorted by corners. Faces of one
+// class carry the same tags (the filter's triangle cells with equal cell data).
+using SurfaceClasses = std::vector<std::pair<Face, int>>;
 
 struct DelaunayParameters
 {
@@ -34,6 +39,10 @@ struct DelaunayParameters
   // partition that holds the whole mesh, whose kept faces are the domain boundary and the
   // material interfaces alone, shared with no other partition.
   bool keptFacesMaySplit = false;
+  // With keptFacesMaySplit: the classes of the tagged kept faces (null: none tagged). TetGen
+  // merges coplanar neighbours of one class only, untagged ones among themselves, so no face it
+  // makes straddles two classes, and each stays a child of triangles of one class.
+  const SurfaceClasses* surfaceClasses = nullptr;
 };
 
 // The edge length up to which templates refine interfaces for a volume bound: the edge of the
