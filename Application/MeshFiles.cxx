@@ -15,6 +15,9 @@
 #include "vtkXMLUnstructuredGridReader.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <system_error>
 #include <unistd.h>
@@ -246,6 +249,18 @@ Status checkWritableFileName(const std::string& fileName, const std::string& wha
     return Status::failure(cannot + "directory '" + directory.string() + "' is not writable");
   if (std::filesystem::is_directory(path, error))
     return Status::failure(cannot + "it is a directory");
+  // access() grants root everything, and a file system may refuse what the mode bits allow (/proc,
+  // a read-only mount): the file is opened for writing, not truncated (non-blocking, should it be
+  // a FIFO), and removed again when this made it, so that a long run does not end in a failed
+  // write.
+  const bool existed = std::filesystem::exists(path, error);
+  const int descriptor =
+    ::open(fileName.c_str(), O_WRONLY | O_CREAT | O_NONBLOCK | O_CLOEXEC, 0666);
+  if (descriptor < 0)
+    return Status::failure(cannot + std::strerror(errno));
+  ::close(descriptor);
+  if (!existed)
+    ::unlink(fileName.c_str());
   return Status::success();
 }
 

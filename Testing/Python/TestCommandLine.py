@@ -558,6 +558,14 @@ def test_stats_checked_first(cgmesh, scratch):
     expect_early_error(cgmesh, scratch, "output under a file",
                        ["refine", cube10, not_a_directory], not_a_directory, 1,
                        "cannot write output file", "'%s' is not a directory" % cube10)
+    # A directory whose mode bits let root write where the file system does not (/proc): found by
+    # opening the file, before the refinement.
+    if os.path.isdir("/proc/self"):
+        refused = "/proc/cgmesh-out.vtu"
+        expect_early_error(cgmesh, scratch, "output where the file system refuses it",
+                           ["refine", cube10, refused, "--iterations", "3",
+                            "--edge-length-factor", "0.25"], refused, 1,
+                           "cannot write output file '%s'" % refused)
 
 
 def test_output_is_not_input(cgmesh, scratch):
