@@ -143,6 +143,11 @@ Status readOpenModel(vtkUnstructuredGrid* grid, MeshFileNames* names)
     pointOfTag.emplace(nodeTags[k], static_cast<vtkIdType>(k));
     points->SetPoint(static_cast<vtkIdType>(k), &coordinates[3 * k]);
   }
+  if (names)
+  {
+    names->pointNumbers.assign(nodeTags.begin(), nodeTags.end());
+    names->cellNumbers.clear();
+  }
 
   grid->Initialize();
   grid->SetPoints(points);
@@ -188,6 +193,8 @@ Status readOpenModel(vtkUnstructuredGrid* grid, MeshFileNames* names)
             corners[c] = found->second;
           }
           grid->InsertNextCell(kind->vtkType, kind->nodes, corners);
+          if (names)
+            names->cellNumbers.push_back(static_cast<std::int64_t>(elementTags[t][e]));
           tags->InsertNextValue(tag);
           entities->InsertNextValue(entity);
         }

@@ -19,6 +19,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <regex>
 #include <system_error>
 #include <unistd.h>
 #include <utility>
@@ -225,6 +226,33 @@ Status readUnstructuredGrid(
   }
   grid->ShallowCopy(output);
   return Status::success();
+}
+
+std::string inFileNumbers(const std::string& message, const MeshFileNames& names)
+{
+  if (names.cellNumbers.empty() || names.pointNumbers.empty())
+    return message;
+  static const std::regex described(R"(cell (\d+) \(points (\d+), (\d+), (\d+)\))");
+  std::smatch match;
+  if (!std::regex_search(message, match, described))
+    return message;
+  const auto numberOf =
+    [](const std::vector<std::int64_t>& numbers, const std::string& text, std::string& number)
+  {
+    const unsigned long long index = std::stoull(text);
+    if (index >= numbers.size())
+      return false;
+    number = std::to_string(numbers[index]);
+    return true;
+  };
+  std::string element, nodes[3];
+  if (!numberOf(names.cellNumbers, match[1], element) ||
+    !numberOf(names.pointNumbers, match[2], nodes[0]) ||
+    !numberOf(names.pointNumbers, match[3], nodes[1]) ||
+    !numberOf(names.pointNumbers, match[4], nodes[2]))
+    return message;
+  return match.prefix().str() + "element " + element + " (nodes " + nodes[0] + ", " + nodes[1] +
+    ", " + nodes[2] + ")" + inFileNumbers(match.suffix().str(), names);
 }
 
 Status checkOutputFileName(const std::string& fileName)

@@ -8,9 +8,11 @@
 
 #include "Core/Status.h"
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 class vtkUnstructuredGrid;
 
@@ -50,7 +52,15 @@ struct MeshFileNames
 {
   std::map<std::pair<int, int>, std::string> physicalNames;
   std::map<std::string, int> nodeSets;
+  // The file's own numbers of the grid's cells and points where the reader keeps them (Gmsh
+  // element and node tags), for messages about the input; empty otherwise.
+  std::vector<std::int64_t> cellNumbers;
+  std::vector<std::int64_t> pointNumbers;
 };
+
+// `message` with the filter's "cell C (points a, b, c)" named by the file's own numbers, "element
+// E (nodes A, B, C)", where `names` has them; unchanged otherwise.
+std::string inFileNumbers(const std::string& message, const MeshFileNames& names);
 
 // How a grid is written.
 struct WriteOptions

@@ -232,7 +232,7 @@ int runRefineCommand(const std::vector<std::string>& commandArguments)
   vtkNew<vtkUnstructuredGrid> output;
   status = refineGrid(arguments, filter, input, output);
   if (!status.ok())
-    return reportError(status.message());
+    return reportError(inFileNumbers(status.message(), names));
 
   RefineStatistics statistics = collectStatistics(arguments, filter, input, output);
   const std::string nothingRefined = nothingRefinedWarning(input, arguments.options, statistics);

@@ -421,6 +421,26 @@ def test_errors(cgmesh, scratch, mesh):
                          cell_data={"Tag": [tet_tags, numpy.append(triangle_tags, 98)]})
     expect_error(cgmesh, scratch, inside, "inner-triangle",
                  ["lie between two tetrahedra of the same material", "cell %d" % stray_cell])
+    # From a Gmsh file the same error names the file's element and node numbers.
+    path = os.path.join(scratch, "bad-inner-triangle.msh")
+    tags = [numpy.asarray(tet_tags), numpy.append(triangle_tags, 98)]
+    meshio.write(path, meshio.Mesh(mesh.points, inside.cells,
+                                   cell_data={"gmsh:physical": tags, "gmsh:geometrical": tags}),
+                 file_format="gmsh22", binary=False)
+    nodes = sorted(int(v) + 1 for v in inner)  # meshio numbers the nodes from 1, in order
+    with open(path) as handle:
+        text = handle.read()
+    rows = text.split("$Elements")[1].split("$EndElements")[0].split("\n")[2:]
+    element = next(int(row.split()[0]) for row in rows
+                   if row.split() and row.split()[1] == "2" and
+                   sorted(int(v) for v in row.split()[3 + int(row.split()[2]):]) == nodes)
+    result = run(cgmesh, "refine", path, os.path.join(scratch, "bad-inner-triangle-refined.vtu"))
+    named = re.search(r"the first is element (\d+) \(nodes (\d+), (\d+), (\d+)\)",
+                      result.stderr)
+    check(result.returncode == 1 and named is not None and int(named.group(1)) == element and
+          sorted(int(named.group(k)) for k in (2, 3, 4)) == nodes,
+          "inner triangle from .msh: expected element %d (nodes %s): %s"
+          % (element, nodes, result.stderr))
     lines = meshio.Mesh(mesh.points, [("tetra", tets), ("triangle", triangles),
                                       ("line", numpy.array([[tets[0][0], tets[0][1]]]))],
                         cell_data={"Tag": [tet_tags, triangle_tags, [7]]})
