@@ -98,6 +98,43 @@ def test_meshed_anew(cgmesh, scratch, tagged):
                                                               given["minDihedralAngleP1"]))
 
 
+def read_node_markers(base):
+    """(coordinates, markers) of TetGen's .node file with a marker column."""
+    with open(base + ".node") as handle:
+        rows = [line.split("#")[0].split() for line in handle]
+    rows = [row for row in rows if row]
+    count, markers = int(rows[0][0]), int(rows[0][3])
+    check(markers == 1, "%s.node has no marker column" % base)
+    points = [[float(v) for v in row[1:4]] for row in rows[1:count + 1]]
+    return points, [int(row[4]) if markers else 0 for row in rows[1:count + 1]]
+
+
+def test_boundary_labels_kept(cgmesh, scratch, tagged):
+    """Point labels (TetGen's node markers: 1 on the box's surface) survive meshing anew: every
+    output point on the surface has marker 1, those TetGen put there too."""
+    marked = os.path.join(scratch, "marked")
+    for extension in (".ele", ".face"):
+        shutil.copyfile(tagged + extension, marked + extension)
+    with open(tagged + ".node") as source, open(marked + ".node", "w") as target:
+        rows = [line.split("#")[0].split() for line in source]
+        rows = [row for row in rows if row]
+        target.write("%s 3 0 1\n" % rows[0][0])
+        for row in rows[1:int(rows[0][0]) + 1]:
+            on_surface = any(float(v) in (0.0, 1.0) for v in row[1:4])
+            target.write("%s %s %s %s %d\n" % (row[0], row[1], row[2], row[3], on_surface))
+    for method, bound in (("template", ("--edge-length-factor", "0.5")),
+                          ("delaunay", ("--method", "delaunay", "--volume-factor", "0.5"))):
+        output = os.path.join(scratch, "marked-%s.ele" % method)
+        ran = refine(cgmesh, marked + ".ele", output, ["--threads", "2"], bound)
+        if ran is None:
+            return
+        check(ran[0]["inputRemeshedBoxes"] == 1, "marked, %s: not meshed anew" % method)
+        points, markers = read_node_markers(output[:-4])
+        lost = sum(1 for point, marker in zip(points, markers)
+                   if marker != 1 and any(abs(v) < 1e-12 or abs(v - 1) < 1e-12 for v in point))
+        check(lost == 0, "marked, %s: %d points on the surface lost their marker" % (method, lost))
+
+
 def test_tagged_triangles_meshed_anew(cgmesh, scratch, tagged):
     """With its facet markers as tagged triangles, the input is meshed anew too: each marker's
     faces split and merge only among themselves, and the children are found by position. Each
@@ -143,6 +180,7 @@ def main():
     if tagged is not None:
         test_meshed_anew(options.cgmesh, options.scratch, tagged)
         test_tagged_triangles_meshed_anew(options.cgmesh, options.scratch, tagged)
+        test_boundary_labels_kept(options.cgmesh, options.scratch, tagged)
     failures = FAILURES + TestTaggedTriangles.FAILURES
     if failures:
         print("%d checks failed" % len(failures), file=sys.stderr)

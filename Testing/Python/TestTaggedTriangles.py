@@ -308,9 +308,11 @@ def test_tetgen_files(cgmesh, tetgen, scratch):
 
 def test_random_point_cloud_delaunay(cgmesh, tetgen, scratch):
     """TetGen's tetrahedralisation of 2,000 random points (slivers up to its flat hull patches),
-    its hull faces tagged, refined by the Delaunay method: valid (no flat tet, which TetGen can
-    leave on four coplanar hull points when it meshes a partition anew), every tagged triangle
-    on the boundary, the same for 1 and 2 threads."""
+    its hull faces tagged and its hull points marked, refined by the Delaunay method: meshed anew
+    first, the hull's triangles split and merged; valid (no flat tet, which TetGen can leave on
+    four coplanar hull points when it meshes a partition anew), the tagged area the input's,
+    every tagged triangle on the boundary and every point of one marked (points TetGen put on
+    the hull weigh its face's corners alone), the same for 1 and 2 threads."""
     points = numpy.random.default_rng(4).random((2000, 3))
     base = os.path.join(scratch, "cloud")
     with open(base + ".node", "w") as handle:
@@ -321,6 +323,15 @@ def test_random_point_cloud_delaunay(cgmesh, tetgen, scratch):
     check(result.returncode == 0, "tetgen: " + result.stdout[-1500:])
     if result.returncode != 0:
         return
+    # Node markers: 1 on the hull (the points of its faces), read as the point label `Marker`.
+    hull = set(int(v) for row in open(base + ".1.face").read().split("\n")[1:]
+               for v in row.split("#")[0].split()[1:4])
+    with open(base + ".1.node") as handle:
+        rows = [row.split() for row in handle if row.split() and not row.startswith("#")]
+    with open(base + ".1.node", "w") as handle:
+        handle.write("%s 3 0 1\n" % rows[0][0])
+        for row in rows[1:]:
+            handle.write("%s %s %s %s %d\n" % (*row[:4], int(row[0]) in hull))
     digests = set()
     for threads in ("1", "2"):
         output = os.path.join(scratch, "cloud-delaunay-%s.vtu" % threads)
@@ -333,8 +344,16 @@ def test_random_point_cloud_delaunay(cgmesh, tetgen, scratch):
     checked = run(cgmesh, "check", output)
     check(checked.returncode == 0 and checked.stdout.rstrip().endswith("valid"),
           "random cloud, Delaunay: cgmesh check: " + checked.stdout[-800:])
-    check(triangles_are_kept_faces(meshio.read(output), "Tag") == 0,
+    refined = meshio.read(output)
+    check(triangles_are_kept_faces(refined, "Tag") == 0,
           "random cloud, Delaunay: tagged triangles inside the mesh")
+    (area_before, area_after) = (sum(figures[1] for figures in surface_figures(mesh, "Tag").values())
+                                 for mesh in (read_tetgen(base + ".1"), refined))
+    check(abs(area_after - area_before) <= 1e-12 * area_before,
+          "random cloud, Delaunay: tagged area %.15g, input %.15g" % (area_after, area_before))
+    triangles, _ = cells_of(refined, "triangle", "Tag")
+    unmarked = int(numpy.sum(refined.point_data["Marker"][numpy.unique(triangles)] != 1))
+    check(unmarked == 0, "random cloud, Delaunay: %d hull points lost their marker" % unmarked)
     check(len(digests) == 1, "random cloud, Delaunay: 1 and 2 threads wrote different files")
 
 
