@@ -96,7 +96,7 @@ void keepSharedLabels(vtkDataArray* source, const PointProvenance& provenance, v
       double shared = 0;
       for (auto entry = provenance.offsets[point]; entry < provenance.offsets[point + 1]; ++entry)
       {
-        if (!(provenance.weights[entry] > 1e-12))
+        if (!(provenance.weights[entry] > NegligibleSourceWeight))
         {
           continue; // a source in name only: the point lies on the face opposite it
         }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <memory>
 #include <new>
 #include <utility>
@@ -37,12 +38,17 @@ public:
 
   bool isMoved(PointId p) const { return !this->Flags.empty() && this->Flags[p]; }
 
-  // A new point inherits relocation from any point it is made of.
+  // A new point inherits relocation from any point it is made of, but not from a source in name
+  // only: a point TetGen put on a boundary face, with rounding noise as the weight of a moved
+  // interior corner, was located anew in the input tet it lies in, whose interior corner then
+  // weighed more than the negligible, and the point lost the labels its face's corners share (3
+  // of the 20,215 hull points of TetGen's tetrahedralisation of 4,000 random points).
   bool inheritsMove(PointId p, const PointSource& location)
   {
     for (int slot = 0; slot < 4 && !this->Flags.empty() && !this->Flags[p]; ++slot)
     {
-      this->Flags[p] = location.weights[slot] != 0 && this->Flags[location.points[slot]];
+      this->Flags[p] = std::abs(location.weights[slot]) > NegligibleSourceWeight &&
+        this->Flags[location.points[slot]];
     }
     return this->isMoved(p);
   }

@@ -27,6 +27,12 @@ struct PointProvenance
   std::vector<PointId> inputPoints; // per output point: the input point it is, or -1 if new
 };
 
+// A source whose weight is at most this in magnitude is one in name only: a point TetGen puts on
+// a face or an edge of the tet it lies in gets rounding noise (1e-17 to 1e-14) as the weight of
+// the corners off that face or edge. Such a source neither shares its labels nor passes on that
+// it moved.
+constexpr double NegligibleSourceWeight = 1e-12;
+
 struct MergedMesh
 {
   TetMesh mesh;

@@ -122,8 +122,8 @@ bool sameArea(const tetgenio& io, const std::vector<std::array<int, 3>>& faces,
 // the corner off the face gets exactly 0. TetGen meshing anew puts points on the kept faces it
 // splits, and in a flat tet, as on a sliver-laden boundary, the corner off the face came out of
 // rounding at 1e-12 and more: labels the face's corners share were lost (on TetGen's
-// tetrahedralisation of 4,000 random points meshed anew, 27 of 20,215 hull points; 3 now, all
-// made after it).
+// tetrahedralisation of 4,000 random points meshed anew, 27 of 20,215 hull points; the last 3
+// were located anew for noise on a moved corner's weight, see NegligibleSourceWeight).
 void weightsOnFace(const double* x, const double* corners[4], std::array<double, 4>& weights)
 {
   int best = -1;
