@@ -163,23 +163,10 @@ void test_settled_partitions_are_not_read_again()
   }
 }
 
-// The edge measure counts every edge of the mesh once, whatever the schedule of its ranges: on
-// the graded cube refined and coarsened (irregular valences), against a set of all edges, with
-// some points outside the field (infinite size), whose edges do not count.
-void test_edge_measure_counts_every_edge_once()
+// measureEdgeSizes() against a set of all edges of `mesh`, run in order and with its tasks taken
+// last to first.
+void checkEdgeMeasure(const TetMesh& mesh)
 {
-  const TetMesh input = gradedCube(5);
-  AdaptationOptions options;
-  options.numberOfIterations = 12;
-  options.numberOfPartitions = 16;
-  AdaptationResult refined;
-  CHECK(adaptMesh(input, options, refined).ok());
-  TetMesh mesh = refined.mesh;
-  for (PointId p = 0; p < mesh.numberOfPoints(); p += 7)
-  {
-    mesh.sizes[p] = std::numeric_limits<double>::infinity();
-  }
-
   std::set<std::pair<PointId, PointId>> edges;
   for (const Tet& tet : mesh.tets)
   {
@@ -205,7 +192,6 @@ void test_edge_measure_counts_every_edge_once()
   }
   CHECK(expected.edges > 10000 && expected.edges < static_cast<std::int64_t>(edges.size()));
 
-  // In order, and with the ranges taken last to first.
   for (const ParallelFor& parallelFor : { ParallelFor(runSerially), ParallelFor(runBackwards) })
   {
     EdgeSizeReport measured;
@@ -215,6 +201,56 @@ void test_edge_measure_counts_every_edge_once()
     CHECK_EQUAL(measured.shareWithinBounds,
       static_cast<double>(within) / static_cast<double>(expected.edges));
   }
+}
+
+// The edge measure counts every edge of the mesh once, whatever the schedule of its tasks, with
+// some points outside the field (infinite size), whose edges do not count: on the graded cube
+// refined and coarsened (irregular valences), and on a Kuhn cube of 105,456 tets with its points
+// numbered at random, so that the edges' lower ends are listed by several blocks of tets into
+// several ranges of points each.
+void test_edge_measure_counts_every_edge_once()
+{
+  const TetMesh input = gradedCube(5);
+  AdaptationOptions options;
+  options.numberOfIterations = 12;
+  options.numberOfPartitions = 16;
+  AdaptationResult refined;
+  CHECK(adaptMesh(input, options, refined).ok());
+  TetMesh mesh = refined.mesh;
+  for (PointId p = 0; p < mesh.numberOfPoints(); p += 7)
+  {
+    mesh.sizes[p] = std::numeric_limits<double>::infinity();
+  }
+  checkEdgeMeasure(mesh);
+
+  TetMesh cube = gradedCube(26);
+  CHECK(cube.tets.size() > 65536 && cube.numberOfPoints() > 2 * 8192);
+  std::vector<PointId> newIdOf(static_cast<std::size_t>(cube.numberOfPoints()));
+  for (std::size_t p = 0; p < newIdOf.size(); ++p)
+  {
+    newIdOf[p] = static_cast<PointId>(p);
+  }
+  std::uint64_t state = 12345;
+  for (std::size_t p = newIdOf.size() - 1; p > 0; --p) // Fisher-Yates with a fixed generator
+  {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    std::swap(newIdOf[p], newIdOf[(state >> 33) % (p + 1)]);
+  }
+  TetMesh shuffled = cube;
+  for (std::size_t p = 0; p < newIdOf.size(); ++p)
+  {
+    std::copy_n(cube.point(static_cast<PointId>(p)), 3, &shuffled.coordinates[3 * newIdOf[p]]);
+    shuffled.sizes[newIdOf[p]] =
+      p % 11 == 0 ? std::numeric_limits<double>::infinity() : 0.3 * cube.sizes[p];
+  }
+  for (Tet& tet : shuffled.tets)
+  {
+    for (PointId& corner : tet)
+    {
+      corner = newIdOf[corner];
+    }
+  }
+  checkEdgeMeasure(shuffled);
 }
 
 // The Delaunay method with a size field: TetGen gets the sizes per point (switch m) and refines
