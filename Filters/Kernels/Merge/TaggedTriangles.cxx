@@ -300,6 +300,25 @@ bool holds(const double* a, const double* b, const double* c, const double point
   return signedArea(a, b) >= slack && signedArea(b, c) >= slack && signedArea(c, a) >= slack;
 }
 
+// The children found as (parent, sorted corners), in that order, each turned to face the way its
+// parent does.
+std::vector<TriangleChild> orientedChildren(const std::vector<std::pair<std::size_t, Face>>& found,
+  const TetMesh& input, const std::vector<Triangle>& triangles, const TetMesh& output)
+{
+  std::vector<TriangleChild> children;
+  children.reserve(found.size());
+  for (const auto& [parent, corners] : found)
+  {
+    TriangleChild child{ parent, corners };
+    if (dot(triangleNormal(output, child.corners), triangleNormal(input, triangles[parent])) < 0)
+    {
+      std::swap(child.corners[1], child.corners[2]);
+    }
+    children.push_back(child);
+  }
+  return children;
+}
+
 } // namespace
 
 TaggedTriangleCheck checkTaggedTriangles(
@@ -355,10 +374,9 @@ TaggedTriangleCheck checkTaggedTriangles(
 std::vector<TriangleChild> findTriangleChildren(const TetMesh& input,
   const std::vector<Triangle>& triangles, const TetMesh& output, const PointProvenance& provenance)
 {
-  std::vector<TriangleChild> children;
   if (triangles.empty())
   {
-    return children;
+    return {};
   }
   const TriangleIndex index(triangles);
   std::vector<char> isTriangleCorner(static_cast<std::size_t>(input.numberOfPoints()), 0);
@@ -396,28 +414,15 @@ std::vector<TriangleChild> findTriangleChildren(const TetMesh& input,
   }
   std::sort(found.begin(), found.end());
   found.erase(std::unique(found.begin(), found.end()), found.end());
-
-  children.reserve(found.size());
-  for (const auto& entry : found)
-  {
-    TriangleChild child{ entry.first, entry.second };
-    if (dot(triangleNormal(output, child.corners), triangleNormal(input, triangles[child.parent])) <
-      0)
-    {
-      std::swap(child.corners[1], child.corners[2]);
-    }
-    children.push_back(child);
-  }
-  return children;
+  return orientedChildren(found, input, triangles, output);
 }
 
 std::vector<TriangleChild> findTriangleChildrenByPosition(
   const TetMesh& input, const std::vector<Triangle>& triangles, const TetMesh& output)
 {
-  std::vector<TriangleChild> children;
   if (triangles.empty() || output.tets.empty())
   {
-    return children;
+    return {};
   }
   const TriangleGrid grid(input, triangles);
   const TriangleIndex index(triangles);
@@ -466,18 +471,7 @@ std::vector<TriangleChild> findTriangleChildrenByPosition(
       }
     });
   std::sort(found.begin(), found.end());
-  children.reserve(found.size());
-  for (const auto& entry : found)
-  {
-    TriangleChild child{ entry.first, entry.second };
-    if (dot(triangleNormal(output, child.corners), triangleNormal(input, triangles[child.parent])) <
-      0)
-    {
-      std::swap(child.corners[1], child.corners[2]);
-    }
-    children.push_back(child);
-  }
-  return children;
+  return orientedChildren(found, input, triangles, output);
 }
 
 } // namespace cgmesh
