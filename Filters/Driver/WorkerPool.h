@@ -83,7 +83,7 @@ private:
   {
     pid_t process = -1;
     int socket = -1;
-    std::timed_mutex busy; // one request at a time; process and socket change only under it
+    std::mutex busy; // one request at a time; process and socket change only under it
   };
   bool start(Worker& worker);
   // The worker that calls for worker `index` go to.
