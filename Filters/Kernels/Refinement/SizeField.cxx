@@ -152,6 +152,7 @@ std::vector<std::pair<PointId, PointId>> uniqueEdges(const TetMesh& mesh)
 {
   const std::size_t pointCount = static_cast<std::size_t>(mesh.numberOfPoints());
   HigherEnds<PointId> higher;
+  // On the calling thread, where a failure can only be a thrown exception, which goes on up.
   higherEnds(mesh, ParallelFor(runSerially), higher);
   std::vector<std::pair<PointId, PointId>> edges;
   edges.reserve(pointCount * 7);
