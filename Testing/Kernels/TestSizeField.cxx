@@ -20,6 +20,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numeric>
+#include <random>
 #include <set>
 #include <utility>
 
@@ -226,16 +228,8 @@ void test_edge_measure_counts_every_edge_once()
   TetMesh cube = gradedCube(26);
   CHECK(cube.tets.size() > 65536 && cube.numberOfPoints() > 2 * 8192);
   std::vector<PointId> newIdOf(static_cast<std::size_t>(cube.numberOfPoints()));
-  for (std::size_t p = 0; p < newIdOf.size(); ++p)
-  {
-    newIdOf[p] = static_cast<PointId>(p);
-  }
-  std::uint64_t state = 12345;
-  for (std::size_t p = newIdOf.size() - 1; p > 0; --p) // Fisher-Yates with a fixed generator
-  {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    std::swap(newIdOf[p], newIdOf[(state >> 33) % (p + 1)]);
-  }
+  std::iota(newIdOf.begin(), newIdOf.end(), PointId{ 0 });
+  std::shuffle(newIdOf.begin(), newIdOf.end(), std::mt19937(12345));
   TetMesh shuffled = cube;
   for (std::size_t p = 0; p < newIdOf.size(); ++p)
   {
