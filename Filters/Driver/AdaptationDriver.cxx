@@ -367,7 +367,7 @@ const char* costOfKeptSlivers(RefinementMethod method)
 Status remeshIfSliverLaden(const AdaptationOptions& options,
   const std::vector<int>& partitionOfCell, PartitionGraph& graph, ColorLoopSetup& setup,
   AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter,
-  std::unique_ptr<WorkerPool>& workers, bool& remeshed)
+  std::unique_ptr<WorkerPool>& workers, bool& remeshed, bool& refined)
 {
   const bool remeshes = remeshesInputFirst(options, summary.plan);
   SliverCount count;
@@ -400,7 +400,7 @@ Status remeshIfSliverLaden(const AdaptationOptions& options,
     attachTetGen(options, setup, summary, workers.get(), !started);
   }
   return remeshInputFirst(
-    options, partitionOfCell, graph, setup, state, summary, reporter, remeshed);
+    options, partitionOfCell, graph, setup, state, summary, reporter, remeshed, refined);
 }
 
 // Refinement (and improvement inside partitions), then the sweeps across former interfaces.
@@ -484,9 +484,9 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
   {
     attachTetGen(options, setup, summary, workers.get());
   }
-  bool remeshedInput = false;
-  status = remeshIfSliverLaden(
-    options, partitionOfCell, graph, setup, state, summary, reporter, workers, remeshedInput);
+  bool remeshedInput = false, refinedInput = false;
+  status = remeshIfSliverLaden(options, partitionOfCell, graph, setup, state, summary, reporter,
+    workers, remeshedInput, refinedInput);
   if (!status.ok() || summary.aborted)
   {
     return status;
@@ -507,6 +507,16 @@ Status runPipeline(const TetMesh& input, const AdaptationOptions& options, Adapt
     setup.interfaceVertexAtStart = &graph.interfaceVertex;
   }
   std::vector<char> formerInterface;
+  if (refinedInput)
+  {
+    // TetGen met the bounds in its one call over the input: the passes only improve, inside the
+    // partitions and then across their interfaces, which stand for the former interfaces.
+    setup.refine = false;
+    setup.numberOfIterations = 1;
+    summary.iterationsRun = 1;
+    summary.refinementConverged = true;
+    formerInterface = graph.interfaceVertex;
+  }
   status = refineAndImprove(options, setup, state, summary, reporter, formerInterface);
   workers.reset();
   if (!status.ok() || summary.aborted)

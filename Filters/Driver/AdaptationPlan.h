@@ -28,6 +28,9 @@ struct AdaptationPlan
   double volumeBound = 0;            // Delaunay: the absolute volume bound; 0 for templates
   int boxesPerAxis = 1;              // improvement sweeps: boxes along each axis
   double improvementVolumeBound = 0; // improvement must not make tets larger than this (0: none)
+  // Delaunay with a volume bound on a small output: a sliver-laden input meshed anew as a whole
+  // is refined to the bound in that same TetGen call, and the refinement passes only improve.
+  bool wholeInputCallRefines = false;
 };
 
 // Checks `options` on their own and against the raw input's shape (ids in range, one region per

@@ -25,8 +25,9 @@ Status returnTetsToPartitions(
 // Meshes the whole input anew in one TetGen call (pAMQnq): from its boundary and material
 // interface faces, which TetGen may split as it splits a boundary it meshes on its own, and all
 // its points. Kept triangles are what leaves slivers on such an input: a tet resting on a large
-// kept triangle stays poor whatever TetGen inserts (see docs/design.md, section 5). Afterwards
-// the whole mesh is one partition; `remeshed` says whether TetGen succeeded.
+// kept triangle stays poor whatever TetGen inserts (see docs/design.md, section 5). With the
+// plan's wholeInputCallRefines the call also has the volume bound (a). Afterwards the whole mesh
+// is one partition; `remeshed` says whether TetGen succeeded.
 Status remeshWholeInput(const ColorLoopSetup& setup, const AdaptationOptions& options,
   AdaptationState& state, AdaptationSummary& summary, PhaseReporter& reporter, bool& remeshed)
 {
@@ -43,7 +44,7 @@ Status remeshWholeInput(const ColorLoopSetup& setup, const AdaptationOptions& op
   sweep.method = RefinementMethod::Delaunay; // also before template refinement
   sweep.improve = false;
   sweep.numberOfIterations = 1;
-  sweep.delaunay.shapesOnly = true;
+  sweep.delaunay.shapesOnly = !summary.plan.wholeInputCallRefines;
   sweep.delaunay.keptFacesMaySplit = true;
   sweep.delaunay.surfaceClasses =
     options.surfaceClasses.empty() ? nullptr : &options.surfaceClasses;
@@ -157,9 +158,10 @@ bool remeshesInputFirst(const AdaptationOptions& options, const AdaptationPlan& 
 
 Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>& partitionOfCell,
   PartitionGraph& graph, ColorLoopSetup& setup, AdaptationState& state, AdaptationSummary& summary,
-  PhaseReporter& reporter, bool& remeshed)
+  PhaseReporter& reporter, bool& remeshed, bool& refined)
 {
   remeshed = false;
+  refined = false;
   Status status = Status::success();
   if (!options.keepBoundaryTriangulation)
   {
@@ -172,9 +174,10 @@ Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>
     {
       status = returnToInputPartitions(
         options, partitionOfCell, graph, setup, state, summary, reporter, 0.6);
-      if (!status.ok())
+      refined = summary.plan.wholeInputCallRefines;
+      if (!status.ok() || refined)
       {
-        return status;
+        return status; // refined: the refinement passes improve it
       }
       return improveInputBetween(
         0.6, 1, options, partitionOfCell, graph, setup, state, summary, reporter);

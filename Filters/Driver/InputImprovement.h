@@ -42,10 +42,13 @@ bool remeshesInputFirst(const AdaptationOptions& options, const AdaptationPlan& 
 // meshed anew (remeshSliverClusters). Then every tet goes back to its input cell's partition with
 // `graph` and the colouring rebuilt, and the tets are improved as by improveInputFirst.
 // `remeshed` says whether TetGen meshed any of it anew, and so whether the tets were improved.
-// Refinement then cuts its partitions through TetGen's tets instead of slivers.
+// Refinement then cuts its partitions through TetGen's tets instead of slivers. `refined`: the
+// whole input was meshed anew and refined to the volume bound in the same call
+// (AdaptationPlan::wholeInputCallRefines); its tets are not improved here, and the refinement
+// passes have only to improve them.
 Status remeshInputFirst(const AdaptationOptions& options, const std::vector<int>& partitionOfCell,
   PartitionGraph& graph, ColorLoopSetup& setup, AdaptationState& state, AdaptationSummary& summary,
-  PhaseReporter& reporter, bool& remeshed);
+  PhaseReporter& reporter, bool& remeshed, bool& refined);
 
 // improveInputFirst, its progress going from `progressStart` to `progressEnd` of its stage.
 Status improveInputBetween(double progressStart, double progressEnd,

@@ -4,6 +4,7 @@
 // meshed anew first), the whole mesh meshed anew with its boundary free, and the sweep's kernel
 // dropping only the interior points refinement made.
 #include "AdaptationDriver.h"
+#include "AdaptationPlan.h"
 #include "Core/Geometry.h"
 #include "Core/TetQuality.h"
 #include "DelaunayTestSupport.h"
@@ -365,6 +366,52 @@ void test_sliver_laden_input_is_meshed_anew_first()
   }
 }
 
+// A small Delaunay run on a sliver-laden input is refined to its volume bound in the one TetGen
+// call that meshes the input anew (AdaptationPlan::wholeInputCallRefines); the refinement passes
+// then only improve. The output is valid and conserving, meets the bound, is the same at 1 and 2
+// threads, and TetGen refined nothing in the partitions. A forecast beyond the fewest automatic
+// partitions' share keeps the partitions refining.
+void test_small_sliver_laden_input_is_refined_in_one_call()
+{
+  const TetMesh input = sliverLadenBlock(1500);
+  AdaptationOptions options = delaunayOptions(1, 1);
+  options.numberOfPartitions = 0;
+  options.volumeFactor = 0.5;
+  options.improveQuality = true;
+  options.improveInput = true;
+  std::vector<AdaptationWarning> warnings;
+  const AdaptationPlan plan = resolvePlan(input, options, warnings);
+  CHECK(plan.wholeInputCallRefines);
+  const AdaptationResult serial = run(input, options);
+  cgmesh_test::checkValidAndConserving(input, serial.mesh);
+  CHECK_EQUAL(serial.summary.inputRemeshedBoxes, std::int64_t(1));
+  CHECK_EQUAL(serial.summary.iterationsRun, 1);
+  CHECK(serial.summary.refinementConverged);
+  // Every input point is kept and every new one is TetGen's: no interface round split an edge.
+  CHECK_EQUAL(serial.mesh.numberOfPoints(), input.numberOfPoints() + serial.summary.tetgenPoints);
+  CHECK_EQUAL(serial.summary.delaunayFallbacks, std::int64_t(0));
+  CHECK(serial.mesh.numberOfTets() > 2 * input.numberOfTets());
+  std::size_t overBound = 0;
+  for (const Tet& tet : serial.mesh.tets)
+  {
+    overBound += signedVolume6(serial.mesh, tet) / 6.0 > plan.volumeBound * (1 + 1e-9);
+  }
+  std::cout << "small sliver-laden block refined in one call: " << input.tets.size() << " tets to "
+            << serial.mesh.tets.size() << ", " << overBound << " over the volume bound\n";
+  CHECK(overBound * 1000 <= serial.mesh.tets.size()); // TetGen's a: a few per mille at most
+  options.numberOfThreads = 2;
+  CHECK(cgmesh_test::identicalResults(serial, run(input, options)));
+
+  // Delaunay forecasts 3 x volume / V tets, 3 n / VolumeFactor for n input tets: one call refines
+  // up to 240,000 (8 partitions of 30,000), and a factor that forecasts 480,000 keeps partitions.
+  options.volumeFactor = 3.0 * static_cast<double>(input.tets.size()) / 480000.0;
+  CHECK(!resolvePlan(input, options, warnings).wholeInputCallRefines);
+  options.volumeFactor = 0.5;
+  options.improveInput = false; // not meshed anew: refined by the partitions as given
+  CHECK(resolvePlan(input, options, warnings).wholeInputCallRefines);
+  CHECK_EQUAL(run(input, options).summary.inputRemeshedBoxes, std::int64_t(0));
+}
+
 // Meshing the whole mesh anew, as a sliver-laden input is: the radius-edge bound alone, the kept
 // faces free to split and merge.
 DelaunayParameters wholeMeshParameters()
@@ -605,6 +652,7 @@ int main()
   test_sliver_laden_partition_is_meshed_anew_around_a_cavity();
   test_sliver_laden_mesh_conforms_across_threads();
   test_sliver_laden_input_is_meshed_anew_first();
+  test_small_sliver_laden_input_is_refined_in_one_call();
   test_whole_mesh_meshed_anew_with_its_boundary_free();
   test_whole_mesh_meshed_anew_loses_the_needles_of_flat_faces();
   test_sweep_box_drops_only_interior_points_refinement_made();
