@@ -266,8 +266,8 @@ int automaticPartitions(const TetMesh& input, const AdaptationOptions& options, 
 bool refinesInWholeInputCall(
   const TetMesh& input, const AdaptationOptions& options, const AdaptationPlan& plan)
 {
-  return options.method == RefinementMethod::Delaunay && plan.volumeBound > 0 &&
-    !plan.sizeField && !plan.restricted() &&
+  return options.method == RefinementMethod::Delaunay && plan.volumeBound > 0 && !plan.sizeField &&
+    !plan.restricted() &&
     forecastDelaunayOutput(input, plan.volumeBound, plan.threads) <=
     MinimumAutomaticPartitions * DelaunayTetsPerPartition;
 }
