@@ -223,9 +223,11 @@ inline const std::vector<ParameterSpec>& parameterTable()
       "eighth of the tets per pass (not with RefinementRegions or RefinementBox, which leave the "
       "other tets as they are). An input with more than 0.1% of its tets under 1 degree is "
       "first meshed anew by TetGen as a whole from its boundary and interface faces, which "
-      "TetGen may split, then improved (Delaunay with tagged boundary triangles: around its "
-      "slivers, its boundary and interface edges split as refinement splits them; Template: "
-      "not with tagged triangles, RefinementRegions or RefinementBox); --no-improve-input "
+      "TetGen may split, then improved (Delaunay with a volume bound and at most 240,000 "
+      "forecast output tets: refined to the bound in that same call, the passes then only "
+      "improving; Delaunay across MPI pieces: around its slivers, its boundary and interface "
+      "edges split as refinement splits them; Template: not across MPI pieces, nor with "
+      "RefinementRegions or RefinementBox); --no-improve-input "
       "refines the input as given, and a sliver-laden one with a warning (Delaunay: slow, as "
       "TetGen refines its partitions against the slivers' faces)",
       &O::improveInput },
