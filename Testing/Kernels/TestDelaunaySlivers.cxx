@@ -303,8 +303,9 @@ std::size_t keptSliversWarnings(const AdaptationResult& result)
 // points, so nothing is dropped. Where the boundary triangulation is kept (tagged triangles,
 // pieces across processes): its interface rounds first, then TetGen on the clusters of its
 // slivers, which drop the points the rounds put inside them. Either way, refinement's partitions
-// then hold TetGen's tets, not the input's slivers: fewer of them are meshed anew, and the output
-// is conforming, conserving and the same for any thread count, with no point left over but those
+// then hold TetGen's tets, not the input's slivers (as a whole, at this size, the call refines
+// them to the bound too, next test): fewer of them are meshed anew, and the output is
+// conforming, conserving and the same for any thread count, with no point left over but those
 // the clusters dropped.
 void test_sliver_laden_input_is_meshed_anew_first()
 {
@@ -403,9 +404,20 @@ void test_small_sliver_laden_input_is_refined_in_one_call()
   CHECK(cgmesh_test::identicalResults(serial, run(input, options)));
 
   // Delaunay forecasts 3 x volume / V tets, 3 n / VolumeFactor for n input tets: one call refines
-  // up to 240,000 (8 partitions of 30,000), and a factor that forecasts 480,000 keeps partitions.
-  options.volumeFactor = 3.0 * static_cast<double>(input.tets.size()) / 480000.0;
+  // up to 240,000 (8 partitions of 30,000). A factor that forecasts 300,000 keeps the partitions
+  // refining after the whole input is meshed anew with the radius-edge bound alone: their
+  // interface rounds split edges, so not every new point is TetGen's.
+  options.volumeFactor = 3.0 * static_cast<double>(input.tets.size()) / 300000.0;
   CHECK(!resolvePlan(input, options, warnings).wholeInputCallRefines);
+  options.numberOfThreads = 1;
+  const AdaptationResult partitioned = run(input, options);
+  cgmesh_test::checkValidAndConserving(input, partitioned.mesh);
+  CHECK_EQUAL(partitioned.summary.inputRemeshedBoxes, std::int64_t(1));
+  CHECK_EQUAL(partitioned.summary.delaunayFallbacks, std::int64_t(0));
+  CHECK(
+    partitioned.mesh.numberOfPoints() > input.numberOfPoints() + partitioned.summary.tetgenPoints);
+  std::cout << "larger sliver-laden run, partitions refining: " << partitioned.mesh.tets.size()
+            << " tets\n";
   options.volumeFactor = 0.5;
   options.improveInput = false; // not meshed anew: refined by the partitions as given
   CHECK(resolvePlan(input, options, warnings).wholeInputCallRefines);
