@@ -15,6 +15,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -47,6 +48,19 @@ void fillAdaptedGrid(const AdaptedGridInput& input, AdaptationResult& result,
     : result.summary.boundaryRetriangulated
     ? findTriangleChildrenByPosition(*input.mesh, input.triangles->triangles, result.mesh)
     : findTriangleChildren(*input.mesh, input.triangles->triangles, result.mesh, result.provenance);
+  // The graded size field the run refined to, per output point: what EdgeLengthRatio and the share
+  // of edges within bounds measure against (the input's own size array, interpolated, is not
+  // graded). A point outside a refinement selection has no target: NaN.
+  std::vector<double> targetEdgeLength;
+  if (result.summary.plan.sizeField)
+  {
+    targetEdgeLength =
+      handling == ResultArrays::HandOver ? std::move(result.mesh.sizes) : result.mesh.sizes;
+    for (double& size : targetEdgeLength)
+    {
+      size = std::isfinite(size) ? size : std::numeric_limits<double>::quiet_NaN();
+    }
+  }
   if (handling == ResultArrays::HandOver)
   {
     convertToUnstructuredGrid(std::move(result.mesh), output, std::string(), parallelFor);
@@ -83,6 +97,13 @@ void fillAdaptedGrid(const AdaptedGridInput& input, AdaptationResult& result,
     transferPointData(input.grid->GetPointData(), result.provenance,
       splitNames(input.interpolatedPointArrays), splitNames(input.labelPointArrays),
       output->GetPointData());
+  }
+  if (!targetEdgeLength.empty())
+  {
+    vtkSmartPointer<vtkDoubleArray> array =
+      arrayTakingOver<vtkDoubleArray>(std::move(targetEdgeLength));
+    array->SetName("TargetEdgeLength");
+    output->GetPointData()->AddArray(array);
   }
 
   vtkCellData* cellData = output->GetCellData();

@@ -1,7 +1,7 @@
 // The filter's output grid from an adaptation result: the tetrahedra, the children of tagged input
 // triangles after them, every input cell array carried from each cell's parent, point data through
-// provenance, and the per-cell arrays of the run (PartitionId, ColorId, NearFormerInterface,
-// EdgeLengthRatio).
+// provenance, the per-cell arrays of the run (PartitionId, ColorId, NearFormerInterface,
+// EdgeLengthRatio) and, with a size field, the point array TargetEdgeLength.
 #ifndef cgmeshAdaptedGrid_h
 #define cgmeshAdaptedGrid_h
 

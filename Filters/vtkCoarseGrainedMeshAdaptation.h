@@ -129,10 +129,11 @@ public:
    * Template: MaximumEdgeLength (0: unused) or EdgeLengthFactor (0.5); or a size field:
    * SizeArrayName (a point or cell array of target edge lengths; none by default) and
    * SizeGradation (1.3) and Coarsen (on: edges shorter than h / sqrt(2) are collapsed at
-   * vertices on no boundary or material interface), with the cell array EdgeLengthRatio and the
-   * field data
-   * EdgesWithinSizeBounds and EdgeSizeRatioHistogram in the output. RefinementRegions ("2,5":
-   * region ids) and RefinementBox ("x0,y0,z0,x1,y1,z1"): refine only there (empty: everywhere).
+   * vertices on no boundary or material interface), with the point array TargetEdgeLength (the
+   * graded field), the cell array EdgeLengthRatio and the field data EdgesWithinSizeBounds and
+   * EdgeSizeRatioHistogram in the output (Delaunay takes a size field too). RefinementRegions
+   * ("2,5": region ids) and RefinementBox ("x0,y0,z0,x1,y1,z1"): refine only there (empty:
+   * everywhere).
    * Delaunay: MaximumVolume (0: unused) or VolumeFactor (0.1), RadiusEdgeRatio (2, at least 1).
    * ImproveQuality (on), ImproveInput (on; Template: improve the input before refining it too)
    * and NumberOfImprovementPasses (2, in [0, 20]).

@@ -11,14 +11,17 @@
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -179,8 +182,40 @@ void test_regionArrayChoices()
   }
 }
 
-// A size array as a point or a cell array refines and reports EdgeLengthRatio and the share of
-// edges within the field; bad ones are refused with the array and the first bad value named.
+// The share of `grid`'s edges (each once) whose length lies within [h/sqrt2, sqrt2 h], h the mean
+// of its ends' `sizes` (the measure of EdgesWithinSizeBounds, to its 1e-12 tolerance).
+double shareOfEdgesWithin(vtkUnstructuredGrid* grid, vtkDataArray* sizes)
+{
+  std::set<std::pair<vtkIdType, vtkIdType>> edges;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    grid->GetCellPoints(c, count, ids);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      for (vtkIdType j = i + 1; j < count; ++j)
+      {
+        edges.emplace(std::min(ids[i], ids[j]), std::max(ids[i], ids[j]));
+      }
+    }
+  }
+  std::size_t inside = 0;
+  for (const auto& [a, b] : edges)
+  {
+    double pa[3], pb[3];
+    grid->GetPoint(a, pa);
+    grid->GetPoint(b, pb);
+    const double length = std::sqrt(vtkMath::Distance2BetweenPoints(pa, pb));
+    const double ratio = length / (0.5 * (sizes->GetComponent(a, 0) + sizes->GetComponent(b, 0)));
+    inside += ratio >= std::sqrt(0.5) * (1 - 1e-12) && ratio <= std::sqrt(2.0) * (1 + 1e-12);
+  }
+  return edges.empty() ? 0.0 : static_cast<double>(inside) / static_cast<double>(edges.size());
+}
+
+// A size array as a point or a cell array refines and reports EdgeLengthRatio, the graded field
+// per point (TargetEdgeLength) and the share of edges within it; bad ones are refused with the
+// array and the first bad value named.
 void test_sizeArrays()
 {
   vtkSmartPointer<vtkUnstructuredGrid> input = cgmesh_test::makeCubeWithTestArrays(3);
@@ -217,6 +252,18 @@ void test_sizeArrays()
     vtkDataArray* within = output->GetFieldData()->GetArray("EdgesWithinSizeBounds");
     CGMESH_CHECK(within && within->GetComponent(0, 0) > 0.5 && within->GetComponent(0, 0) <= 1,
       "EdgesWithinSizeBounds missing or implausible with " << name);
+    // The graded field per output point: the share of edges within bounds, measured again from
+    // the output's edges and TargetEdgeLength, is the one reported.
+    vtkDataArray* target = output->GetPointData()->GetArray("TargetEdgeLength");
+    CGMESH_CHECK(target && target->GetNumberOfTuples() == output->GetNumberOfPoints(),
+      "no TargetEdgeLength per point with size array " << name);
+    if (target && within)
+    {
+      const double measured = shareOfEdgesWithin(output, target);
+      CGMESH_CHECK(std::abs(measured - within->GetComponent(0, 0)) < 1e-12,
+        "edges within TargetEdgeLength's bounds "
+          << measured << ", reported " << within->GetComponent(0, 0) << " with " << name);
+    }
   }
 
   vtkNew<vtkDoubleArray> negative;
