@@ -261,8 +261,9 @@ int automaticPartitions(const TetMesh& input, const AdaptationOptions& options, 
 // That call already costs about what serial TetGen's refinement does, and the partitions that
 // would refine its tets again, split at their interfaces, take more: the benchmark's poor input
 // (26,269 tets, V = 2e-4) took 1.6 s at one thread and 1.33 at two for 130,469 tets, with 8
-// partitions in 6 colours, against 0.77 s of serial TetGen for 121,131. Larger outputs keep
-// the partitions, which the threads share.
+// partitions in 6 colours, against 0.77 s of serial TetGen for 121,131; refined in the one call,
+// 1.40 and 1.12 s for 119,232 tets against 0.94 s (docs/design.md, section 5). Larger outputs
+// keep the partitions, which the threads share.
 bool refinesInWholeInputCall(
   const TetMesh& input, const AdaptationOptions& options, const AdaptationPlan& plan)
 {
