@@ -250,15 +250,26 @@ void test_sliver_laden_partition_is_meshed_anew_around_a_cavity()
   CHECK(after < 0.25 * before);
 }
 
+// Delaunay on the sliver-laden block at half its mean tet volume, on one thread, improving (the
+// input first with `improveInput`: a sliver-laden input is then meshed anew); 0 partitions:
+// automatic.
+AdaptationOptions sliverLadenBlockOptions(int partitions, bool improveInput)
+{
+  AdaptationOptions options = delaunayOptions(1, 1);
+  options.numberOfPartitions = partitions;
+  options.volumeFactor = 0.5;
+  options.improveQuality = true;
+  options.improveInput = improveInput;
+  return options;
+}
+
 // The whole method on a sliver-laden two-material mesh: conforming, conserving, the same for any
 // thread count, and its partitions meshed anew.
 void test_sliver_laden_mesh_conforms_across_threads()
 {
   const TetMesh input = sliverLadenBlock(1500);
-  AdaptationOptions options = delaunayOptions(1, 1);
-  options.numberOfPartitions = 8;
-  options.volumeFactor = 0.5;
-  options.improveInput = false; // refined as given (see the next test)
+  // Refined as given (see the next test).
+  AdaptationOptions options = sliverLadenBlockOptions(8, false);
   const AdaptationResult serial = run(input, options);
   cgmesh_test::checkValidAndConserving(input, serial.mesh);
   CHECK(serial.summary.tetgenRemeshed > 0);
@@ -310,11 +321,7 @@ std::size_t keptSliversWarnings(const AdaptationResult& result)
 void test_sliver_laden_input_is_meshed_anew_first()
 {
   const TetMesh input = sliverLadenBlock(1500);
-  AdaptationOptions options = delaunayOptions(1, 1);
-  options.numberOfPartitions = 8;
-  options.volumeFactor = 0.5;
-  options.improveQuality = true;
-  options.improveInput = false;
+  AdaptationOptions options = sliverLadenBlockOptions(8, false);
   const AdaptationResult refinedAsGiven = run(input, options);
   CHECK_EQUAL(refinedAsGiven.summary.inputRemeshedBoxes, std::int64_t(0));
   // Refined as given, the run says so, why, and what it costs.
@@ -375,11 +382,7 @@ void test_sliver_laden_input_is_meshed_anew_first()
 void test_small_sliver_laden_input_is_refined_in_one_call()
 {
   const TetMesh input = sliverLadenBlock(1500);
-  AdaptationOptions options = delaunayOptions(1, 1);
-  options.numberOfPartitions = 0;
-  options.volumeFactor = 0.5;
-  options.improveQuality = true;
-  options.improveInput = true;
+  AdaptationOptions options = sliverLadenBlockOptions(0, true);
   std::vector<AdaptationWarning> warnings;
   const AdaptationPlan plan = resolvePlan(input, options, warnings);
   CHECK(plan.wholeInputCallRefines);
