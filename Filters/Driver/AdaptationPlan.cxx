@@ -222,14 +222,15 @@ int partitionsByRegion(
   return static_cast<int>(total);
 }
 
-// What Delaunay refinement makes of the input: under the volume bound, or with a size field (then
-// `volumeBound` is 0) tet by tet at the mean size of its corners.
-double forecastDelaunayOutput(const TetMesh& input, double volumeBound, int threads)
+// What Delaunay refinement makes of the input: under the volume bound, from the input's mean tet
+// volume, or with a size field (then `volumeBound` is 0) tet by tet at the mean size of its
+// corners.
+double forecastDelaunayOutput(const TetMesh& input, double meanVolume, double volumeBound)
 {
   if (!input.hasSizes())
   {
     return forecastDelaunayTets(
-      meanTetVolume(input, threads) * static_cast<double>(input.numberOfTets()), volumeBound);
+      meanVolume * static_cast<double>(input.numberOfTets()), volumeBound);
   }
   return forecastDelaunayTetsForSizes(input.tets, input.coordinates, input.sizes);
 }
@@ -243,17 +244,22 @@ double forecastDelaunayOutput(const TetMesh& input, double volumeBound, int thre
 // got 149,310 tets with 64 partitions and 130,481 with 8, in the same 0.77 s at 2 threads; such
 // a run is short at any parallel width. The count never depends on the thread count, so neither
 // does the output.
-int automaticPartitions(const TetMesh& input, const AdaptationOptions& options, double volumeBound)
+int automaticPartitions(const AdaptationOptions& options, double delaunayForecast)
 {
   if (options.method != RefinementMethod::Delaunay)
   {
     return AutomaticTemplatePartitions;
   }
-  const double partitions =
-    forecastDelaunayOutput(input, volumeBound, resolveThreadCount(options.numberOfThreads)) /
-    DelaunayTetsPerPartition;
+  const double partitions = delaunayForecast / DelaunayTetsPerPartition;
   return static_cast<int>(std::lround(std::min<double>(
     MaximumAutomaticPartitions, std::max<double>(MinimumAutomaticPartitions, partitions))));
+}
+
+// Whether a run may be refined in the whole-input call, its forecast aside (below).
+bool mayRefineInWholeInputCall(const AdaptationOptions& options, const AdaptationPlan& plan)
+{
+  return options.method == RefinementMethod::Delaunay && plan.volumeBound > 0 && !plan.sizeField &&
+    !plan.restricted();
 }
 
 // Whether meshing a sliver-laden input anew as a whole (InputImprovement.h) also refines it to
@@ -265,16 +271,15 @@ int automaticPartitions(const TetMesh& input, const AdaptationOptions& options, 
 // 1.40 and 1.12 s for 119,232 tets against 0.94 s (docs/design.md, section 5). Larger outputs
 // keep the partitions, which the threads share.
 bool refinesInWholeInputCall(
-  const TetMesh& input, const AdaptationOptions& options, const AdaptationPlan& plan)
+  const AdaptationOptions& options, const AdaptationPlan& plan, double delaunayForecast)
 {
-  return options.method == RefinementMethod::Delaunay && plan.volumeBound > 0 && !plan.sizeField &&
-    !plan.restricted() &&
-    forecastDelaunayOutput(input, plan.volumeBound, plan.threads) <=
-    MinimumAutomaticPartitions * DelaunayTetsPerPartition;
+  return mayRefineInWholeInputCall(options, plan) &&
+    delaunayForecast <= MinimumAutomaticPartitions * DelaunayTetsPerPartition;
 }
 
-int resolvePartitions(const TetMesh& input, const AdaptationOptions& options, double volumeBound,
-  std::vector<AdaptationWarning>& warnings)
+// `delaunayForecast`: forecastDelaunayOutput() for an automatic Delaunay count, else unread.
+int resolvePartitions(const TetMesh& input, const AdaptationOptions& options,
+  double delaunayForecast, std::vector<AdaptationWarning>& warnings)
 {
   const CellId tets = input.numberOfTets();
   if (tets == 0)
@@ -288,8 +293,7 @@ int resolvePartitions(const TetMesh& input, const AdaptationOptions& options, do
   if (options.numberOfPartitions == 0)
   {
     // Automatic: never more partitions than tets, and no warning, as nothing was asked.
-    return static_cast<int>(
-      std::min<CellId>(tets, automaticPartitions(input, options, volumeBound)));
+    return static_cast<int>(std::min<CellId>(tets, automaticPartitions(options, delaunayForecast)));
   }
   if (options.numberOfPartitions > tets)
   {
@@ -423,6 +427,7 @@ AdaptationPlan resolvePlan(
 {
   AdaptationPlan plan;
   plan.threads = resolveThreadCount(options.numberOfThreads);
+  double meanVolume = 0; // Delaunay under a volume bound: the input's, read once
   if (input.hasSizes())
   {
     // Edges are measured against the field, and TetGen gets it per point: no single threshold
@@ -431,9 +436,9 @@ AdaptationPlan resolvePlan(
   }
   else if (options.method == RefinementMethod::Delaunay)
   {
-    plan.volumeBound = options.maximumVolume > 0
-      ? options.maximumVolume
-      : options.volumeFactor * meanTetVolume(input, plan.threads);
+    meanVolume = meanTetVolume(input, plan.threads);
+    plan.volumeBound =
+      options.maximumVolume > 0 ? options.maximumVolume : options.volumeFactor * meanVolume;
     plan.edgeLengthThreshold = interfaceEdgeLengthForVolume(plan.volumeBound);
     // Improvement must not undo Delaunay refinement's volume bound.
     plan.improvementVolumeBound = plan.volumeBound;
@@ -444,10 +449,17 @@ AdaptationPlan resolvePlan(
       ? options.maximumEdgeLength
       : options.edgeLengthFactor * meanTetEdgeLength(input, plan.threads);
   }
-  plan.partitions = resolvePartitions(input, options, plan.volumeBound, warnings);
-  plan.partitioner = resolvePartitioner(options);
   parseSelection(options, plan); // checked in checkOptionsAndInput
-  plan.wholeInputCallRefines = refinesInWholeInputCall(input, options, plan);
+  // The Delaunay forecast, made once for the automatic partition count and the whole-input rule
+  // (a pass over every tet), and only when one of them reads it.
+  const bool automaticCount = options.numberOfPartitions == 0 && !options.partitionByRegion;
+  const double delaunayForecast = options.method == RefinementMethod::Delaunay &&
+      !input.tets.empty() && (automaticCount || mayRefineInWholeInputCall(options, plan))
+    ? forecastDelaunayOutput(input, meanVolume, plan.volumeBound)
+    : 0;
+  plan.partitions = resolvePartitions(input, options, delaunayForecast, warnings);
+  plan.partitioner = resolvePartitioner(options);
+  plan.wholeInputCallRefines = refinesInWholeInputCall(options, plan, delaunayForecast);
   // About as many boxes as refinement partitions, so that a box is about a partition's size.
   plan.boxesPerAxis =
     std::max(1, static_cast<int>(std::lround(std::cbrt(std::max(1, plan.partitions)))));
