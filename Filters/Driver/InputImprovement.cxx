@@ -6,6 +6,8 @@
 #include "Refinement/PartitionRefiner.h"
 #include "RemeshSweep.h"
 
+#include <atomic>
+
 namespace cgmesh
 {
 namespace
@@ -80,6 +82,35 @@ Status improveInputFirst(const AdaptationOptions& options, const std::vector<int
 namespace
 {
 
+// Whether a tet below the improvement target (and not kept) lies in the partitions: the only tets
+// the input's improvement starts from, as it never coarsens. The partitions are read in their
+// order, which follows the mesh, where the colour loop reads each colour's partitions scattered
+// over it; on the Kuhn cube N=56 (no poor tet) with 65,536 partitions that loop took 0.13-0.15 s
+// at 2 threads to find nothing, 0.01-0.02 s with 1,024.
+bool holdsPoorTet(const ColorLoopSetup& setup, AdaptationState& state, Status& status)
+{
+  std::vector<double> noProvisionalPoints;
+  const PartitionPoints points{ &state.coordinates, &noProvisionalPoints };
+  std::atomic<bool> found(false);
+  status = runParallel(setup.threads, static_cast<std::int64_t>(state.partitions.size()),
+    [&](std::int64_t p)
+    {
+      if (found.load(std::memory_order_relaxed))
+      {
+        return; // the answer is known
+      }
+      for (const Tet& tet : state.partitions[static_cast<std::size_t>(p)].tets)
+      {
+        if (needsImprovement(tet, points, setup.improvement))
+        {
+          found.store(true, std::memory_order_relaxed);
+          return;
+        }
+      }
+    });
+  return found.load();
+}
+
 // improveInputBetween, without counting its operations apart.
 Status improveInputTets(double progressStart, double progressEnd, const AdaptationOptions& options,
   const std::vector<int>& partitionOfCell, PartitionGraph& graph, ColorLoopSetup& setup,
@@ -100,8 +131,14 @@ Status improveInputTets(double progressStart, double progressEnd, const Adaptati
   improveOnly.stage = Stage::ImproveInput;
   improveOnly.progressStart = progressStart;
   improveOnly.progressEnd = progressMiddle;
+  reporter.enter(Phase::Improve);
+  Status status = Status::success();
+  if (!holdsPoorTet(improveOnly, state, status))
+  {
+    return status; // the loops below would change nothing
+  }
   const std::int64_t poorBefore = summary.poorTets;
-  Status status = runColorLoop(improveOnly, options, state, summary, reporter);
+  status = runColorLoop(improveOnly, options, state, summary, reporter);
   if (!status.ok() || summary.aborted)
   {
     return status;
